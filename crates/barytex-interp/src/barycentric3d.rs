@@ -1,0 +1,148 @@
+//! 3D barycentric coordinates (seed 000, "Obliczenie barycentrycznych współrzędnych w R³").
+
+use glam::{DVec3, Vec3};
+
+use crate::InterpError;
+
+/// Barycentric coordinates `[α, β, γ]` of `p` with respect to the triangle `tri = [a, b, c]` in
+/// 3D, by the cross-product form in f64.
+///
+/// A point off the triangle's plane is projected orthogonally onto it first (the weights are
+/// those of the projection). Each weight is its own ratio
+/// `((vⱼ − p) × (vₖ − p))·n / |n|²` with `n = (b − a) × (c − a)`, so none is derived from the others
+/// by subtraction. The cross-product form's error grows like 1/aspect of a sliver; Cramer's
+/// dot-product form (`methods::barycentric_3d_cramer_f32`) grows like 1/aspect² and is not used.
+///
+/// # Errors
+/// [`InterpError::DegenerateTriangle`] when the vertices are exactly collinear (`n = 0`),
+/// [`InterpError::NonFinite`] for NaN or infinite coordinates.
+///
+/// # Accuracy
+/// Each weight is within `1 ulp + 2⁻⁴⁶·κ` of the exact rational weight of the projected point,
+/// `κ = max(|p|, |a|, |b|, |c|) · max edge length / |2·area|` (tests
+/// `barycentric_3d_within_bar` and `slivers_3d_within_bar`).
+///
+/// ```
+/// use barytex_interp::barycentric_3d;
+/// use glam::Vec3;
+/// let tri = [Vec3::X, Vec3::Y, Vec3::Z];
+/// let w = barycentric_3d(Vec3::splat(1.0 / 3.0), tri)?;
+/// assert!(w.iter().all(|&wi| (wi - 1.0 / 3.0).abs() < 1e-7));
+/// # Ok::<(), barytex_interp::InterpError>(())
+/// ```
+pub fn barycentric_3d(p: Vec3, tri: [Vec3; 3]) -> Result<[f32; 3], InterpError> {
+    if !p.is_finite() {
+        return Err(InterpError::NonFinite { what: "point" });
+    }
+    if !tri.iter().all(|v| v.is_finite()) {
+        return Err(InterpError::NonFinite { what: "triangle" });
+    }
+    let p = p.as_dvec3();
+    let [a, b, c] = tri.map(|v| v.as_dvec3());
+    let n = (b - a).cross(c - a);
+    let nn = n.length_squared();
+    if nn == 0.0 {
+        return Err(InterpError::DegenerateTriangle);
+    }
+    let area = |q: DVec3, r: DVec3| (q - p).cross(r - p).dot(n) / nn;
+    Ok([
+        area(b, c) as f32,
+        area(c, a) as f32,
+        area(a, b) as f32,
+    ])
+}
+
+pub(crate) mod methods {
+    use glam::Vec3;
+
+    use crate::InterpError;
+
+    /// Cramer's rule on the dot products (Ericson, *Real-Time Collision Detection*) in f32.
+    ///
+    /// # Accuracy
+    /// None guaranteed: the denominator `(e₁·e₁)(e₂·e₂) − (e₁·e₂)²` cancels like 1/aspect², so a
+    /// sliver of aspect 1e-4 already loses every digit. Kept to show it in the report. Degenerate
+    /// triangles give NaN or infinities.
+    #[must_use]
+    pub fn barycentric_3d_cramer_f32(p: Vec3, [a, b, c]: [Vec3; 3]) -> [f32; 3] {
+        let v0 = b - a;
+        let v1 = c - a;
+        let v2 = p - a;
+        let d00 = v0.dot(v0);
+        let d01 = v0.dot(v1);
+        let d11 = v1.dot(v1);
+        let d20 = v2.dot(v0);
+        let d21 = v2.dot(v1);
+        let den = d00 * d11 - d01 * d01;
+        let beta = (d11 * d20 - d01 * d21) / den;
+        let gamma = (d00 * d21 - d01 * d20) / den;
+        [1.0 - beta - gamma, beta, gamma]
+    }
+
+    /// The cross-product form in f32: `β = ((p−a)×e₂)·n/|n|²`, `γ = (e₁×(p−a))·n/|n|²`,
+    /// `α = 1 − β − γ`.
+    ///
+    /// # Accuracy
+    /// Error grows like 1/aspect at f32 precision. Kept for the speed-vs-error report.
+    #[must_use]
+    pub fn barycentric_3d_cross_f32(p: Vec3, [a, b, c]: [Vec3; 3]) -> [f32; 3] {
+        let e1 = b - a;
+        let e2 = c - a;
+        let f = p - a;
+        let n = e1.cross(e2);
+        let inv = 1.0 / n.length_squared();
+        let beta = f.cross(e2).dot(n) * inv;
+        let gamma = e1.cross(f).dot(n) * inv;
+        [1.0 - beta - gamma, beta, gamma]
+    }
+
+    /// The seed's precomputed form: per triangle
+    /// `u_β = (e₂²e₁ − (e₁·e₂)e₂)/(e₁²e₂² − (e₁·e₂)²)` and `u_γ` likewise, then per point
+    /// `β = u_β·f`, `γ = u_γ·f` with `f = p − a`: two dot products per query.
+    ///
+    /// # Accuracy
+    /// The denominator is Cramer's, so the error grows like 1/aspect² (as
+    /// [`barycentric_3d_cramer_f32`]); fastest per query when a triangle is queried many times.
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct PrecomputedTriangle3 {
+        origin: Vec3,
+        u_beta: Vec3,
+        u_gamma: Vec3,
+    }
+
+    impl PrecomputedTriangle3 {
+        /// Precompute `u_β` and `u_γ` for the triangle `[a, b, c]`.
+        ///
+        /// # Errors
+        /// [`InterpError::DegenerateTriangle`] when the f32 denominator is zero or not finite,
+        /// [`InterpError::NonFinite`] for NaN or infinite vertices.
+        pub fn new([a, b, c]: [Vec3; 3]) -> Result<Self, InterpError> {
+            if !(a.is_finite() && b.is_finite() && c.is_finite()) {
+                return Err(InterpError::NonFinite { what: "triangle" });
+            }
+            let e1 = b - a;
+            let e2 = c - a;
+            let e11 = e1.dot(e1);
+            let e22 = e2.dot(e2);
+            let e12 = e1.dot(e2);
+            let den = e11 * e22 - e12 * e12;
+            if den == 0.0 || !den.is_finite() {
+                return Err(InterpError::DegenerateTriangle);
+            }
+            Ok(Self {
+                origin: a,
+                u_beta: (e22 * e1 - e12 * e2) / den,
+                u_gamma: (e11 * e2 - e12 * e1) / den,
+            })
+        }
+
+        /// `[α, β, γ]` of `p` (projected onto the plane).
+        #[must_use]
+        pub fn weights(&self, p: Vec3) -> [f32; 3] {
+            let f = p - self.origin;
+            let beta = self.u_beta.dot(f);
+            let gamma = self.u_gamma.dot(f);
+            [1.0 - beta - gamma, beta, gamma]
+        }
+    }
+}

@@ -1,0 +1,58 @@
+//! The crate's error type.
+
+use core::fmt;
+
+/// Why an interpolation could not be computed.
+///
+/// Every fallible function of the crate returns this type; the variants carry enough context to
+/// say which input was wrong.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum InterpError {
+    /// An input coordinate, weight or `w` was NaN or infinite.
+    NonFinite {
+        /// Which input: `"point"`, `"triangle"`, `"quad"`, `"weights"`, …
+        what: &'static str,
+    },
+    /// The triangle has zero area (its vertices are exactly collinear), so barycentric
+    /// coordinates do not exist.
+    DegenerateTriangle,
+    /// The quad collapses so that the bilinear map is not invertible anywhere (for example all
+    /// four corners collinear).
+    DegenerateQuad,
+    /// The two endpoints of a segment coincide, so no parameter identifies a point on it.
+    DegenerateSegment,
+    /// Weights of an affine or convex combination do not sum to one.
+    WeightsDoNotSumToOne {
+        /// The sum, computed in f64.
+        sum: f64,
+    },
+    /// A convex combination was given a negative weight.
+    NegativeWeight {
+        /// Position of the weight.
+        index: usize,
+        /// Its value.
+        weight: f32,
+    },
+}
+
+impl fmt::Display for InterpError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NonFinite { what } => write!(f, "{what} has a NaN or infinite component"),
+            Self::DegenerateTriangle => {
+                f.write_str("triangle has zero area (its vertices are collinear)")
+            }
+            Self::DegenerateQuad => f.write_str("quad is degenerate: the bilinear map collapses"),
+            Self::DegenerateSegment => f.write_str("segment endpoints coincide"),
+            Self::WeightsDoNotSumToOne { sum } => {
+                write!(f, "weights sum to {sum}, not 1")
+            }
+            Self::NegativeWeight { index, weight } => {
+                write!(f, "weight {index} is negative ({weight}) in a convex combination")
+            }
+        }
+    }
+}
+
+impl core::error::Error for InterpError {}

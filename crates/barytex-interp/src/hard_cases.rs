@@ -1,0 +1,260 @@
+//! The named hard cases of this crate, in one place: run by the tests, the fuzz regressions and
+//! the speed-vs-error report (`barytex report`).
+//!
+//! Each case is plain data; the tests compute the exact answer from it with rational arithmetic,
+//! so a case never carries a hard-coded expected float.
+
+use glam::{Vec2, Vec3};
+
+use crate::Location;
+
+/// Kettner et al.'s grid ("Classroom examples of robustness problems in geometric
+/// computations"): the points `(0.5 + i·ulp, 0.5 + j·ulp)` for `i, j` in `0..n`, tested against
+/// the line through `(12, 12)` and `(24, 24)`. Naive f32 orientation gets thousands of these
+/// signs wrong; an exact predicate none.
+///
+/// Yields `(p, a, b)` with `a = (12, 12)` and `b = (24, 24)`.
+pub fn kettner_grid(n: u32) -> impl Iterator<Item = (Vec2, Vec2, Vec2)> {
+    let a = Vec2::new(12.0, 12.0);
+    let b = Vec2::new(24.0, 24.0);
+    let base = 0.5f32.to_bits();
+    (0..n).flat_map(move |i| {
+        (0..n).map(move |j| {
+            let p = Vec2::new(f32::from_bits(base + i), f32::from_bits(base + j));
+            (p, a, b)
+        })
+    })
+}
+
+/// A named 2D triangle and query point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TriangleCase {
+    /// What makes it hard.
+    pub name: &'static str,
+    /// The case's parameter (aspect, offset, scale, …), 0 when it has none.
+    pub parameter: f32,
+    /// `[a, b, c]`.
+    pub triangle: [Vec2; 3],
+    /// The query point.
+    pub point: Vec2,
+    /// The location when the case pins it down by construction.
+    pub expected: Option<Location>,
+}
+
+/// A named 3D triangle and query point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Triangle3Case {
+    /// What makes it hard.
+    pub name: &'static str,
+    /// The case's parameter, 0 when it has none.
+    pub parameter: f32,
+    /// `[a, b, c]`.
+    pub triangle: [Vec3; 3],
+    /// The query point (in the plane up to rounding).
+    pub point: Vec3,
+}
+
+/// A named quad and the `(α, β)` to map forward and invert.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct QuadCase {
+    /// What makes it hard.
+    pub name: &'static str,
+    /// The case's parameter, 0 when it has none.
+    pub parameter: f32,
+    /// `[x, y, z, w]` as in [`bilinear`](crate::bilinear).
+    pub quad: [Vec2; 4],
+    /// The preimage to round-trip.
+    pub alpha_beta: Vec2,
+}
+
+const ASPECTS: [f32; 5] = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7];
+const OFFSETS: [f32; 4] = [1e4, 1e5, 1e6, 1e7];
+const TINY: [f32; 3] = [1e-10, 1e-20, 1e-30];
+
+fn v(x: f32, y: f32) -> Vec2 {
+    Vec2::new(x, y)
+}
+
+/// The 2D triangle table: slivers of aspect 1e-3 … 1e-7, offsets 1e4 … 1e7, tiny scales down to
+/// 1e-30, subnormal coordinates, huge coordinates, points exactly on edges and vertices, and
+/// points one ulp off an edge.
+pub fn triangles_2d() -> impl Iterator<Item = TriangleCase> {
+    let slivers = ASPECTS.into_iter().map(|k| TriangleCase {
+        name: "sliver",
+        parameter: k,
+        triangle: [v(0.0, 0.0), v(1.0, 0.0), v(0.5, k)],
+        point: v(0.3, 0.4 * k),
+        expected: None,
+    });
+    let offsets = OFFSETS.into_iter().map(|o| TriangleCase {
+        name: "offset",
+        parameter: o,
+        triangle: [v(o, o), v(o + 1000.0, o), v(o, o + 1000.0)],
+        point: v(o + 250.0, o + 300.0),
+        expected: Some(Location::Inside),
+    });
+    let tiny = TINY.into_iter().map(|s| TriangleCase {
+        name: "tiny scale",
+        parameter: s,
+        triangle: [v(0.0, 0.0), v(3.0 * s, s), v(s, 3.0 * s)],
+        point: v(1.5 * s, 1.25 * s),
+        expected: Some(Location::Inside),
+    });
+    let fixed = [
+        TriangleCase {
+            name: "subnormal",
+            parameter: 1e-40,
+            triangle: [v(0.0, 0.0), v(1e-40, 0.0), v(0.0, 1e-40)],
+            point: v(2e-41, 3e-41),
+            expected: Some(Location::Inside),
+        },
+        TriangleCase {
+            name: "huge",
+            parameter: 1e38,
+            triangle: [v(-3e38, -3e38), v(3e38, -3e38), v(0.0, 3e38)],
+            point: v(1e37, 1e37),
+            expected: Some(Location::Inside),
+        },
+        TriangleCase {
+            name: "on edge midpoint",
+            parameter: 0.0,
+            triangle: [v(0.0, 0.0), v(3.0, 1.0), v(1.0, 3.0)],
+            point: v(2.0, 2.0),
+            expected: Some(Location::OnEdge(0)),
+        },
+        TriangleCase {
+            name: "on edge, inexact parameter",
+            parameter: 0.0,
+            triangle: [v(0.1, 0.1), v(0.7, 0.1), v(0.3, 0.9)],
+            point: v(0.3, 0.1),
+            expected: Some(Location::OnEdge(2)),
+        },
+        TriangleCase {
+            name: "on vertex",
+            parameter: 0.0,
+            triangle: [v(0.1, 0.2), v(0.7, 0.1), v(0.3, 0.9)],
+            point: v(0.7, 0.1),
+            expected: Some(Location::OnVertex(1)),
+        },
+        TriangleCase {
+            name: "one ulp outside an edge",
+            parameter: 0.0,
+            triangle: [v(0.5, 0.5), v(12.0, 12.0), v(0.0, 24.0)],
+            point: v(f32::from_bits(0.5f32.to_bits() + 1), 0.5 + 0.0),
+            expected: Some(Location::Outside),
+        },
+        TriangleCase {
+            name: "one ulp inside an edge",
+            parameter: 0.0,
+            triangle: [v(0.5, 0.5), v(12.0, 12.0), v(0.0, 24.0)],
+            point: v(6.0, f32::from_bits(6.0f32.to_bits() + 1)),
+            expected: Some(Location::Inside),
+        },
+        TriangleCase {
+            name: "clockwise",
+            parameter: 0.0,
+            triangle: [v(0.0, 0.0), v(0.0, 1.0), v(1.0, 0.0)],
+            point: v(0.25, 0.25),
+            expected: Some(Location::Inside),
+        },
+        TriangleCase {
+            name: "seed example 9, outside",
+            parameter: 0.0,
+            triangle: [v(0.0, 0.0), v(2.0, 3.0), v(3.0, 1.0)],
+            point: v(1.0, 0.0),
+            expected: Some(Location::Outside),
+        },
+    ];
+    slivers.chain(offsets).chain(tiny).chain(fixed)
+}
+
+/// The 3D triangle table: tilted slivers of aspect 1e-3 … 1e-7 and offsets 1e4 … 1e7.
+pub fn triangles_3d() -> impl Iterator<Item = Triangle3Case> {
+    let slivers = ASPECTS.into_iter().map(|k| {
+        let a = Vec3::new(0.0, 0.0, 0.0);
+        let b = Vec3::new(1.0, 1.0, 1.0);
+        let c = Vec3::new(0.5 + k, 0.5 - k, 0.5);
+        Triangle3Case {
+            name: "tilted sliver",
+            parameter: k,
+            triangle: [a, b, c],
+            point: a * 0.3 + b * 0.3 + c * 0.4,
+        }
+    });
+    let offsets = OFFSETS.into_iter().map(|o| {
+        let base = Vec3::splat(o);
+        Triangle3Case {
+            name: "offset",
+            parameter: o,
+            triangle: [
+                base,
+                base + Vec3::new(1000.0, 0.0, 500.0),
+                base + Vec3::new(0.0, 1000.0, 250.0),
+            ],
+            point: base + Vec3::new(250.0, 500.0, 250.0),
+        }
+    });
+    slivers.chain(offsets)
+}
+
+/// The quad table: the seed's Example 10 quad, an exact parallelogram (A = 0, where thresholded
+/// solvers switch branches), a near-parallelogram, a trapezoid, a sliver, tiny scales down to
+/// 1e-30, subnormal size and offsets 1e4 … 1e7.
+pub fn quads() -> impl Iterator<Item = QuadCase> {
+    let example = [v(0.0, 0.0), v(4.0, 0.0), v(5.0, 3.0), v(0.0, 2.0)];
+    let fixed = [
+        QuadCase {
+            name: "seed example 10",
+            parameter: 0.0,
+            quad: example,
+            alpha_beta: v(2.0 / 3.0, 1.0 / 3.0),
+        },
+        QuadCase {
+            name: "parallelogram",
+            parameter: 0.0,
+            quad: [v(0.0, 0.0), v(2.0, 0.5), v(2.5, 1.5), v(0.5, 1.0)],
+            alpha_beta: v(0.3, 0.7),
+        },
+        QuadCase {
+            name: "near-parallelogram",
+            parameter: 1e-6,
+            quad: [v(0.0, 0.0), v(1.0, 0.0), v(1.0 + 1e-6, 1.0), v(0.0, 1.0)],
+            alpha_beta: v(0.6, 0.2),
+        },
+        QuadCase {
+            name: "trapezoid",
+            parameter: 0.0,
+            quad: [v(0.0, 0.0), v(4.0, 0.0), v(3.0, 1.0), v(1.0, 1.0)],
+            alpha_beta: v(0.9, 0.95),
+        },
+        QuadCase {
+            name: "sliver",
+            parameter: 1e-3,
+            quad: [v(0.0, 0.0), v(1.0, 0.0), v(1.0, 1e-3), v(0.0, 2e-3)],
+            alpha_beta: v(0.25, 0.5),
+        },
+        QuadCase {
+            name: "subnormal size",
+            parameter: 1e-40,
+            quad: [v(0.0, 0.0), v(4e-40, 0.0), v(5e-40, 3e-40), v(0.0, 2e-40)],
+            alpha_beta: v(0.5, 0.25),
+        },
+    ];
+    let tiny = TINY.into_iter().map(move |s| QuadCase {
+        name: "tiny scale",
+        parameter: s,
+        quad: example.map(|c| c * s),
+        alpha_beta: v(0.5, 0.25),
+    });
+    let offsets = OFFSETS.into_iter().map(move |o| QuadCase {
+        name: "offset",
+        parameter: o,
+        quad: example.map(|c| c * 256.0 + Vec2::splat(o)),
+        alpha_beta: v(0.5, 0.25),
+    });
+    fixed.into_iter().chain(tiny).chain(offsets)
+}
+
+/// Inputs with NaN or infinite coordinates: every public function must answer them with an
+/// error, `None` or its documented value, never a panic.
+pub const NON_FINITE: [f32; 4] = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, -f32::NAN];

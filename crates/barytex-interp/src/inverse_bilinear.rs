@@ -1,0 +1,212 @@
+//! Inverse bilinear interpolation: point → `(α, β)` (seed 000, "Odwrócenie na płaszczyźnie").
+//!
+//! For a fixed `β` the point lies on the segment `s₁(β) s₂(β)` with `s₁ = (1−β)x + βw` and
+//! `s₂ = (1−β)y + βz`; requiring `(s₁ − u) × (s₂ − u) = 0` gives `Aβ² + Bβ + C = 0` with
+//! `A = (w − x) × (z − y)`, `B = (z − y) × (u − x) − (w − x) × (u − y)`,
+//! `C = (u − x) × (u − y)`. (The seed prints `A = (w − u) × (z − y)`; expanding the cross product
+//! shows it is `w − x`.) The roots are taken cancellation-free as `q/A` and `C/q` with
+//! `q = −½(B + sign(B)·√(B² − 4AC))`, so a parallelogram (`A = 0`) needs no threshold: its root is
+//! `C/q = −C/B`. Then `α` is the projection of `u` onto `s₁s₂`.
+
+use glam::{DVec2, DVec3, Vec2, Vec3};
+
+use crate::InterpError;
+
+/// The preimages `(α, β)` of a point under the bilinear map of a quad.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum InverseBilinear {
+    /// Exactly one preimage in `[0, 1]²` — the usual answer for a point in a convex quad.
+    Inside(Vec2),
+    /// Two distinct preimages in `[0, 1]²`: the quad is non-convex or self-intersecting, so the
+    /// map folds over (the seed's Figure IV.13). The first has the smaller `β`.
+    Folded(Vec2, Vec2),
+    /// No preimage in `[0, 1]²`. Holds the real preimage nearest to the unit square (in the max
+    /// norm), or `None` when the point has no real preimage at all.
+    Outside(Option<Vec2>),
+}
+
+impl InverseBilinear {
+    /// The preimage inside `[0, 1]²` (the first one for a folded quad), if any.
+    #[must_use]
+    pub fn inside(self) -> Option<Vec2> {
+        match self {
+            Self::Inside(ab) | Self::Folded(ab, _) => Some(ab),
+            Self::Outside(_) => None,
+        }
+    }
+}
+
+/// How far outside `[0, 1]` a parameter may be computed and still count as inside. f64 rounding
+/// of a point exactly on the boundary stays far below it, and it is far below what the f32
+/// result can resolve (2⁻²⁴).
+const INSIDE_SLACK: f64 = 1e-9;
+
+/// Invert the bilinear map of the quad `[x, y, z, w]` (corner order as in
+/// [`bilinear`](crate::bilinear)) at the point `p`.
+///
+/// Scale invariant and threshold-free: the solver works in f64 relative to corner `x`, where every
+/// f32 input and product is representable without overflow or underflow, so a quad of size 1e-30
+/// or at offset 1e7 behaves like a unit quad. A point exactly on the boundary is inside;
+/// inside results are clamped to `[0, 1]²`.
+///
+/// When `s₁(β) = s₂(β)` (an edge of the quad collapsed to a point), every `α` maps to the same
+/// point and `α = 0` is returned.
+///
+/// # Errors
+/// [`InterpError::NonFinite`] for NaN or infinite input; [`InterpError::DegenerateQuad`] when the
+/// quadratic vanishes identically (e.g. all corners collinear).
+///
+/// # Accuracy
+/// Inside convex quads: within `3e-7·(1 + κ)` of the exact preimage of the f32 input point, where
+/// `κ` is the quad's condition number (diameter over the smallest distance from a corner to the
+/// opposite diagonal line); at unit scale this is the bar `≤ 3e-7` (tests
+/// `inverse_bilinear_round_trip`, `inverse_bilinear_scale_invariant` and the hard-case table).
+///
+/// ```
+/// use barytex_interp::{inverse_bilinear_2d, InverseBilinear};
+/// use glam::Vec2;
+/// // Seed 000, Example 10: (α, β) = (1/2, 1/4) maps to (17/8, 5/8).
+/// let quad = [Vec2::new(0.0, 0.0), Vec2::new(4.0, 0.0), Vec2::new(5.0, 3.0), Vec2::new(0.0, 2.0)];
+/// let ab = inverse_bilinear_2d(Vec2::new(17.0 / 8.0, 5.0 / 8.0), quad)?.inside().unwrap();
+/// assert!((ab - Vec2::new(0.5, 0.25)).length() < 1e-7);
+/// # Ok::<(), barytex_interp::InterpError>(())
+/// ```
+pub fn inverse_bilinear_2d(p: Vec2, quad: [Vec2; 4]) -> Result<InverseBilinear, InterpError> {
+    if !p.is_finite() {
+        return Err(InterpError::NonFinite { what: "point" });
+    }
+    if !quad.iter().all(|c| c.is_finite()) {
+        return Err(InterpError::NonFinite { what: "quad" });
+    }
+    let origin = quad[0].as_dvec2();
+    solve(
+        p.as_dvec2() - origin,
+        quad.map(|c| c.as_dvec2() - origin),
+    )
+}
+
+/// Invert the bilinear map of a quad in 3D, planar or not.
+///
+/// The corners and the point are projected onto a plane where the quad is convex, then solved as
+/// [`inverse_bilinear_2d`]. For a planar quad (or a nearly planar one) that plane is the one
+/// spanned by the diagonals; when that projection is not convex, the seed's choice is used: the
+/// plane perpendicular to the line joining the midpoints of the diagonals, on which the
+/// projection of a non-planar quad is always convex (seed 000, Corollary 12), so the inverse is
+/// exact for every point on the bilinear surface. A point off the surface gets the preimage of its
+/// projection.
+///
+/// # Errors
+/// As [`inverse_bilinear_2d`]; [`InterpError::DegenerateQuad`] also when both diagonals are
+/// parallel and the quad is planar.
+///
+/// # Accuracy
+/// As [`inverse_bilinear_2d`] for points on the surface (test
+/// `inverse_bilinear_3d_round_trip_non_planar`).
+pub fn inverse_bilinear_3d(p: Vec3, quad: [Vec3; 4]) -> Result<InverseBilinear, InterpError> {
+    if !p.is_finite() {
+        return Err(InterpError::NonFinite { what: "point" });
+    }
+    if !quad.iter().all(|c| c.is_finite()) {
+        return Err(InterpError::NonFinite { what: "quad" });
+    }
+    let origin = quad[0].as_dvec3();
+    let p = p.as_dvec3() - origin;
+    let q = quad.map(|c| c.as_dvec3() - origin);
+    let diagonal_normal = (q[2] - q[0]).cross(q[3] - q[1]);
+    let midpoint_normal = (q[1] + q[3] - q[0] - q[2]) * 0.5;
+    let mut last = Err(InterpError::DegenerateQuad);
+    for normal in [diagonal_normal, midpoint_normal] {
+        let Some(frame) = Frame::perpendicular_to(normal) else {
+            continue;
+        };
+        let flat = q.map(|c| frame.project(c));
+        if is_strictly_convex(flat) {
+            return solve(frame.project(p), flat);
+        }
+        last = solve(frame.project(p), flat);
+    }
+    last
+}
+
+/// An orthonormal basis of the plane perpendicular to a normal.
+struct Frame {
+    t1: DVec3,
+    t2: DVec3,
+}
+
+impl Frame {
+    fn perpendicular_to(normal: DVec3) -> Option<Self> {
+        let n = normal.try_normalize()?;
+        let (t1, t2) = n.any_orthonormal_pair();
+        Some(Self { t1, t2 })
+    }
+
+    fn project(&self, v: DVec3) -> DVec2 {
+        DVec2::new(v.dot(self.t1), v.dot(self.t2))
+    }
+}
+
+fn is_strictly_convex(q: [DVec2; 4]) -> bool {
+    let turns: [f64; 4] =
+        core::array::from_fn(|i| (q[(i + 1) % 4] - q[i]).perp_dot(q[(i + 2) % 4] - q[(i + 1) % 4]));
+    turns.iter().all(|&t| t > 0.0) || turns.iter().all(|&t| t < 0.0)
+}
+
+/// The solver proper, in f64, with the quad translated so that `x` is near the origin.
+fn solve(u: DVec2, [x, y, z, w]: [DVec2; 4]) -> Result<InverseBilinear, InterpError> {
+    let a = (w - x).perp_dot(z - y);
+    let b = (z - y).perp_dot(u - x) - (w - x).perp_dot(u - y);
+    let c = (u - x).perp_dot(u - y);
+    if a == 0.0 && b == 0.0 {
+        return if c == 0.0 {
+            Err(InterpError::DegenerateQuad)
+        } else {
+            Ok(InverseBilinear::Outside(None))
+        };
+    }
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 || !disc.is_finite() {
+        return Ok(InverseBilinear::Outside(None));
+    }
+    let sign_b = if b < 0.0 { -1.0 } else { 1.0 };
+    let q = -0.5 * (b + sign_b * crate::math::sqrt(disc));
+    let mut roots = [q / a, c / q];
+    if roots[1] < roots[0] {
+        roots.swap(0, 1);
+    }
+    let mut inside: [Option<DVec2>; 2] = [None; 2];
+    let mut nearest: Option<(f64, DVec2)> = None;
+    for (slot, &beta) in roots.iter().enumerate() {
+        if !beta.is_finite() || (slot == 1 && roots[0] == beta) {
+            continue;
+        }
+        let ab = DVec2::new(alpha_for(u, [x, y, z, w], beta), beta);
+        let distance = distance_outside_unit_square(ab);
+        if distance <= INSIDE_SLACK {
+            inside[slot] = Some(ab.clamp(DVec2::ZERO, DVec2::ONE));
+        } else if nearest.is_none_or(|(d, _)| distance < d) {
+            nearest = Some((distance, ab));
+        }
+    }
+    let f32_pair = |v: DVec2| v.as_vec2();
+    Ok(match inside {
+        [Some(first), Some(second)] => InverseBilinear::Folded(f32_pair(first), f32_pair(second)),
+        [Some(only), None] | [None, Some(only)] => InverseBilinear::Inside(f32_pair(only)),
+        [None, None] => InverseBilinear::Outside(nearest.map(|(_, ab)| f32_pair(ab))),
+    })
+}
+
+/// α by projecting `u` onto `s₁(β) s₂(β)`; 0 when that segment collapses to a point.
+fn alpha_for(u: DVec2, [x, y, z, w]: [DVec2; 4], beta: f64) -> f64 {
+    let s1 = x + (w - x) * beta;
+    let s2 = y + (z - y) * beta;
+    let d = s2 - s1;
+    let den = d.length_squared();
+    if den == 0.0 { 0.0 } else { (u - s1).dot(d) / den }
+}
+
+fn distance_outside_unit_square(ab: DVec2) -> f64 {
+    let below = (-ab).max(DVec2::ZERO);
+    let above = (ab - DVec2::ONE).max(DVec2::ZERO);
+    below.max(above).max_element()
+}

@@ -1,0 +1,152 @@
+//! Linear interpolation on a line and its inverse (seed 000: `x(α) = (1−α)x₁ + αx₂`,
+//! `α = (u−x₁)·(x₂−x₁)/|x₂−x₁|²`).
+
+use glam::{DVec3, Vec2, Vec3};
+
+macro_rules! exact_lerp {
+    ($(#[$doc:meta])* $name:ident, $t:ty) => {
+        $(#[$doc])*
+        #[must_use]
+        #[inline]
+        pub fn $name(a: $t, b: $t, t: $t) -> $t {
+            // The P0811 (C++20 `std::lerp`) construction: each branch keeps all four properties.
+            if (a <= 0.0 && b >= 0.0) || (a >= 0.0 && b <= 0.0) {
+                // Opposite signs: both products move monotonically with t and cannot cancel.
+                return t * b + (1.0 - t) * a;
+            }
+            if t == 1.0 {
+                return b;
+            }
+            // Same sign: `b − a` cannot overflow and `a + t(b − a)` is exact at t = 0 and
+            // consistent for a == b; clamping against b restores monotonicity and boundedness
+            // that the rounding of `a + t(b − a)` could break near t = 1.
+            let x = a + t * (b - a);
+            if (t > 1.0) == (b > a) {
+                if b < x { x } else { b }
+            } else if x < b {
+                x
+            } else {
+                b
+            }
+        }
+    };
+}
+
+exact_lerp!(
+    /// Linear interpolation `(1 − t)·a + t·b` with all four properties at once.
+    ///
+    /// - exact endpoints: `lerp(a, b, 0.0) == a` and `lerp(a, b, 1.0) == b`;
+    /// - consistent: `lerp(a, a, t) == a` for every finite `t`;
+    /// - monotonic in `t`;
+    /// - bounded: for `t` in `[0, 1]` the result lies between `a` and `b`.
+    ///
+    /// `t` outside `[0, 1]` extrapolates along the same line (the seed's α < 0 and α > 1), still
+    /// monotonic. Built as C++20's `std::lerp` (P0811); glam's `a + (b − a)·t` is not exact at
+    /// `t = 1` and, in some versions, not consistent (glam #823).
+    ///
+    /// # Accuracy
+    /// For finite inputs and `t` in `[0, 1]`: `|lerp(a, b, t) − exact| ≤ 2·ε·max(|a|, |b|)` with
+    /// `ε = f32::EPSILON` (test `lerp_accuracy_bound` in `tests/lerp.rs`).
+    ///
+    /// # Special values
+    /// A NaN input gives NaN, except that `t == 1` returns `b` as given. Infinite endpoints of
+    /// opposite sign give NaN for `0 < t < 1`. Never panics.
+    ///
+    /// ```
+    /// use barytex_interp::lerp;
+    /// assert_eq!(lerp(0.1, 0.7, 1.0), 0.7);
+    /// assert_eq!(lerp(3.0, 3.0, 0.3), 3.0);
+    /// assert_eq!(lerp(1.0, 3.0, 1.5), 4.0); // extrapolation
+    /// ```
+    lerp,
+    f32
+);
+
+exact_lerp!(
+    /// [`lerp`] for `f64`, with the same four properties.
+    ///
+    /// # Accuracy
+    /// For finite inputs and `t` in `[0, 1]`: `|lerp_f64(a, b, t) − exact| ≤ 2·ε·max(|a|, |b|)`
+    /// with `ε = f64::EPSILON` (test `lerp_f64_accuracy_bound` in `tests/lerp.rs`).
+    lerp_f64,
+    f64
+);
+
+/// The parameter `t` with `lerp(a, b, t) == x`: `(x − a)/(b − a)`.
+///
+/// Returns `None` when `a == b` (every or no `t` would do) or when an input is not finite.
+/// `inverse_lerp(a, b, a) == Some(0.0)` and `inverse_lerp(a, b, b) == Some(1.0)` exactly.
+///
+/// # Accuracy
+/// Computed in f64 and rounded once: within 1 ulp of the exact quotient of the f32 inputs when
+/// `a` and `b` are within 2²⁹ of each other in magnitude (test `inverse_lerp_is_within_one_ulp`).
+///
+/// ```
+/// use barytex_interp::inverse_lerp;
+/// assert_eq!(inverse_lerp(2.0, 4.0, 3.0), Some(0.5));
+/// assert_eq!(inverse_lerp(2.0, 2.0, 3.0), None);
+/// ```
+#[must_use]
+pub fn inverse_lerp(a: f32, b: f32, x: f32) -> Option<f32> {
+    if !(a.is_finite() && b.is_finite() && x.is_finite()) || a == b {
+        return None;
+    }
+    let (a, b, x) = (f64::from(a), f64::from(b), f64::from(x));
+    Some(((x - a) / (b - a)) as f32)
+}
+
+/// The seed's projection formula: the parameter α of the point on the line through `x1`, `x2`
+/// nearest to `u`, `α = (u − x1)·(x2 − x1)/|x2 − x1|²`, in 2D.
+///
+/// For `u` on the segment this inverts `x1.lerp(x2, α)`; `α` is outside `[0, 1]` when the
+/// projection falls outside the segment.
+///
+/// # Errors
+/// [`InterpError::DegenerateSegment`](crate::InterpError::DegenerateSegment) when `x1 == x2`,
+/// [`InterpError::NonFinite`](crate::InterpError::NonFinite) for NaN or infinite input.
+///
+/// # Accuracy
+/// Evaluated in f64 from the f32 inputs and rounded once: within 1 ulp of the exact value for
+/// segments whose coordinates span less than 2²⁹ (test `segment_parameter_matches_exact`).
+///
+/// ```
+/// use barytex_interp::segment_parameter_2d;
+/// use glam::Vec2;
+/// let a = segment_parameter_2d(Vec2::new(1.0, 5.0), Vec2::ZERO, Vec2::new(4.0, 0.0))?;
+/// assert_eq!(a, 0.25);
+/// # Ok::<(), barytex_interp::InterpError>(())
+/// ```
+pub fn segment_parameter_2d(u: Vec2, x1: Vec2, x2: Vec2) -> Result<f32, crate::InterpError> {
+    check_finite(&[u.x, u.y, x1.x, x1.y, x2.x, x2.y])?;
+    let d = x2.as_dvec2() - x1.as_dvec2();
+    let den = d.length_squared();
+    if den == 0.0 {
+        return Err(crate::InterpError::DegenerateSegment);
+    }
+    Ok(((u.as_dvec2() - x1.as_dvec2()).dot(d) / den) as f32)
+}
+
+/// [`segment_parameter_2d`] in 3D.
+///
+/// # Errors
+/// As [`segment_parameter_2d`].
+///
+/// # Accuracy
+/// As [`segment_parameter_2d`] (test `segment_parameter_matches_exact`).
+pub fn segment_parameter_3d(u: Vec3, x1: Vec3, x2: Vec3) -> Result<f32, crate::InterpError> {
+    check_finite(&[u.x, u.y, u.z, x1.x, x1.y, x1.z, x2.x, x2.y, x2.z])?;
+    let d: DVec3 = x2.as_dvec3() - x1.as_dvec3();
+    let den = d.length_squared();
+    if den == 0.0 {
+        return Err(crate::InterpError::DegenerateSegment);
+    }
+    Ok(((u.as_dvec3() - x1.as_dvec3()).dot(d) / den) as f32)
+}
+
+fn check_finite(values: &[f32]) -> Result<(), crate::InterpError> {
+    if values.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(crate::InterpError::NonFinite { what: "point" })
+    }
+}

@@ -1,0 +1,81 @@
+//! Interpolation math for texturing and rasterization, exact where a sign decides topology.
+//!
+//! `barytex-interp` is the bottom crate of barytex: it depends only on [`glam`] (and the `robust`
+//! adaptive predicates), works without `std`, and every approximate function states an
+//! `# Accuracy` bound that a test enforces (see `docs/ACCURACY.md` in the repository).
+//!
+//! | concept | items |
+//! |---|---|
+//! | weighted sums of any attribute | [`Interpolate`], [`interpolate3`] |
+//! | linear interpolation | [`lerp`], [`lerp_f64`], [`inverse_lerp`], [`segment_parameter_2d`], [`segment_parameter_3d`] |
+//! | checked weights | [`AffineCombination`], [`ConvexCombination`] |
+//! | exact orientation | [`orient2d`], [`Orientation`] |
+//! | barycentric coordinates | [`barycentric_2d`], [`locate_2d`], [`Location`], [`barycentric_3d`], [`methods`] |
+//! | quads and cubes | [`bilinear`], [`inverse_bilinear_2d`], [`inverse_bilinear_3d`], [`trilinear`] |
+//! | projective space | [`Homogeneous3`], [`perspective_correct_weights`], [`perspective_interpolate`] |
+//!
+//! Conventions: f32 on the data path, f64 or exact arithmetic inside predicates and solvers;
+//! orientation signs are those of the determinant `(b − a) × (c − a)` in a y-up frame. Nothing
+//! panics on NaN, infinite, huge or degenerate input: it returns an error, `None`, or a documented
+//! value.
+//!
+//! ```
+//! use barytex_interp::{barycentric_2d, Location};
+//! use glam::Vec2;
+//!
+//! let tri = [Vec2::new(0.0, 0.0), Vec2::new(2.0, 3.0), Vec2::new(3.0, 1.0)];
+//! let b = barycentric_2d(Vec2::new(2.0, 3.0), tri)?;
+//! assert_eq!(b.weights, [0.0, 1.0, 0.0]);
+//! assert_eq!(b.location, Location::OnVertex(1));
+//! # Ok::<(), barytex_interp::InterpError>(())
+//! ```
+#![no_std]
+#![cfg_attr(docsrs, feature(doc_cfg))]
+
+#[cfg(not(any(feature = "std", feature = "libm")))]
+compile_error!("barytex-interp needs the `std` feature or, on no_std targets, the `libm` feature");
+
+#[cfg(feature = "std")]
+extern crate std;
+
+mod barycentric2d;
+mod barycentric3d;
+mod bilinear;
+mod combination;
+mod error;
+pub mod hard_cases;
+mod homogeneous;
+mod interpolate;
+mod inverse_bilinear;
+mod lerp;
+mod math;
+mod orient;
+mod perspective;
+mod trilinear;
+
+pub use barycentric2d::{Barycentric, Location, barycentric_2d, locate_2d};
+pub use barycentric3d::barycentric_3d;
+pub use bilinear::bilinear;
+pub use combination::{AffineCombination, ConvexCombination};
+pub use error::InterpError;
+pub use homogeneous::Homogeneous3;
+pub use interpolate::{Interpolate, interpolate3};
+pub use inverse_bilinear::{InverseBilinear, inverse_bilinear_2d, inverse_bilinear_3d};
+pub use lerp::{inverse_lerp, lerp, lerp_f64, segment_parameter_2d, segment_parameter_3d};
+pub use orient::{Orientation, orient2d};
+pub use perspective::{perspective_correct_weights, perspective_interpolate};
+pub use trilinear::trilinear;
+
+/// The alternative methods that trade accuracy for speed, kept public so the speed-vs-error report
+/// and the benchmarks can measure them against the defaults on the same inputs.
+///
+/// Use the crate-level functions unless you have measured that one of these is good enough.
+pub mod methods {
+    pub use crate::barycentric2d::methods::{
+        barycentric_2d_dop_f32, barycentric_2d_f64, barycentric_2d_naive_f32,
+    };
+    pub use crate::barycentric3d::methods::{
+        PrecomputedTriangle3, barycentric_3d_cramer_f32, barycentric_3d_cross_f32,
+    };
+    pub use crate::orient::methods::{orient2d_dop_f32, orient2d_naive_f32};
+}

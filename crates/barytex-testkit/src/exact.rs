@@ -1,0 +1,179 @@
+//! Exact-rational reference implementations: every finite float is a rational, so these answers
+//! carry no rounding at all.
+
+use barytex_interp::Location;
+use glam::{Vec2, Vec3};
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{Signed, ToPrimitive, Zero};
+
+/// An exact rational number.
+pub type Q = BigRational;
+
+/// The exact value of a finite float; `None` for NaN or infinities.
+#[must_use]
+pub fn q(x: f64) -> Option<Q> {
+    Q::from_float(x)
+}
+
+/// The exact value of a finite float.
+///
+/// # Panics
+/// On NaN or infinite input: callers filter those first.
+#[must_use]
+pub fn qf(x: f32) -> Q {
+    q(f64::from(x)).expect("finite input")
+}
+
+/// The rational nearest f64 (rounded by `num`'s conversion).
+#[must_use]
+pub fn to_f64(x: &Q) -> f64 {
+    x.to_f64().unwrap_or(f64::NAN)
+}
+
+/// `|a − b|` as f64.
+#[must_use]
+pub fn abs_diff(a: &Q, b: &Q) -> f64 {
+    to_f64(&(a - b).abs())
+}
+
+type P2 = [Q; 2];
+type P3 = [Q; 3];
+
+fn p2(v: Vec2) -> P2 {
+    [qf(v.x), qf(v.y)]
+}
+
+fn p3(v: Vec3) -> P3 {
+    [qf(v.x), qf(v.y), qf(v.z)]
+}
+
+fn cross2(o: &P2, a: &P2, b: &P2) -> Q {
+    (&a[0] - &o[0]) * (&b[1] - &o[1]) - (&a[1] - &o[1]) * (&b[0] - &o[0])
+}
+
+/// The exact determinant `(b − a) × (c − a)`.
+#[must_use]
+pub fn orient2d_det(a: Vec2, b: Vec2, c: Vec2) -> Q {
+    cross2(&p2(a), &p2(b), &p2(c))
+}
+
+/// The exact sign of `(b − a) × (c − a)`: 1, −1 or 0.
+#[must_use]
+pub fn orient2d_sign(a: Vec2, b: Vec2, c: Vec2) -> i8 {
+    sign(&orient2d_det(a, b, c))
+}
+
+fn sign(x: &Q) -> i8 {
+    if x.is_positive() {
+        1
+    } else if x.is_negative() {
+        -1
+    } else {
+        0
+    }
+}
+
+/// Exact barycentric weights of `p` in `tri`; `None` for a zero-area triangle.
+#[must_use]
+pub fn barycentric_2d(p: Vec2, tri: [Vec2; 3]) -> Option<[Q; 3]> {
+    let [a, b, c] = tri.map(p2);
+    let p = p2(p);
+    let total = cross2(&a, &b, &c);
+    if total.is_zero() {
+        return None;
+    }
+    Some([
+        cross2(&b, &c, &p) / &total,
+        cross2(&c, &a, &p) / &total,
+        cross2(&a, &b, &p) / &total,
+    ])
+}
+
+/// The exact location of `p` relative to `tri`.
+#[must_use]
+pub fn location_2d(p: Vec2, tri: [Vec2; 3]) -> Location {
+    let Some(w) = barycentric_2d(p, tri) else {
+        return Location::Degenerate;
+    };
+    let signs = w.map(|wi| sign(&wi));
+    if signs.contains(&-1) {
+        return Location::Outside;
+    }
+    match signs.iter().filter(|&&s| s == 0).count() {
+        0 => Location::Inside,
+        1 => Location::OnEdge(signs.iter().position(|&s| s == 0).unwrap_or(0)),
+        _ => Location::OnVertex(signs.iter().position(|&s| s != 0).unwrap_or(0)),
+    }
+}
+
+fn sub3(a: &P3, b: &P3) -> P3 {
+    [&a[0] - &b[0], &a[1] - &b[1], &a[2] - &b[2]]
+}
+
+fn cross3(a: &P3, b: &P3) -> P3 {
+    [
+        &a[1] * &b[2] - &a[2] * &b[1],
+        &a[2] * &b[0] - &a[0] * &b[2],
+        &a[0] * &b[1] - &a[1] * &b[0],
+    ]
+}
+
+fn dot3(a: &P3, b: &P3) -> Q {
+    &a[0] * &b[0] + &a[1] * &b[1] + &a[2] * &b[2]
+}
+
+/// Exact barycentric weights of the orthogonal projection of `p` onto the plane of `tri`;
+/// `None` for collinear vertices.
+#[must_use]
+pub fn barycentric_3d(p: Vec3, tri: [Vec3; 3]) -> Option<[Q; 3]> {
+    let [a, b, c] = tri.map(p3);
+    let p = p3(p);
+    let n = cross3(&sub3(&b, &a), &sub3(&c, &a));
+    let nn = dot3(&n, &n);
+    if nn.is_zero() {
+        return None;
+    }
+    let area = |q: &P3, r: &P3| dot3(&cross3(&sub3(q, &p), &sub3(r, &p)), &n) / &nn;
+    Some([area(&b, &c), area(&c, &a), area(&a, &b)])
+}
+
+/// The exact bilinear map of `quad` at `(α, β)`.
+#[must_use]
+pub fn bilinear_2d(quad: [Vec2; 4], alpha: f64, beta: f64) -> [Q; 2] {
+    let [x, y, z, w] = quad.map(p2);
+    let a = q(alpha).unwrap_or_default();
+    let b = q(beta).unwrap_or_default();
+    let one = Q::from_integer(BigInt::from(1));
+    let wx = (&one - &a) * (&one - &b);
+    let wy = &a * (&one - &b);
+    let wz = &a * &b;
+    let ww = (&one - &a) * &b;
+    core::array::from_fn(|i| &wx * &x[i] + &wy * &y[i] + &wz * &z[i] + &ww * &w[i])
+}
+
+/// Exact perspective-correct weights `(αᵢ/wᵢ)/Σ(αⱼ/wⱼ)`; `None` when the sum is zero.
+#[must_use]
+pub fn perspective_weights(screen: &[f32], w: &[f32]) -> Option<Vec<Q>> {
+    let q: Vec<Q> = screen.iter().zip(w).map(|(&a, &wi)| qf(a) / qf(wi)).collect();
+    let sum: Q = q.iter().cloned().sum();
+    if sum.is_zero() {
+        return None;
+    }
+    Some(q.iter().map(|qi| qi / &sum).collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn seed_example_9_exact() {
+        let tri = [Vec2::ZERO, Vec2::new(2.0, 3.0), Vec2::new(3.0, 1.0)];
+        let w = barycentric_2d(Vec2::new(1.0, 0.0), tri).unwrap();
+        let expect = [(5, 7), (-1, 7), (3, 7)];
+        for (wi, (n, d)) in w.iter().zip(expect) {
+            assert_eq!(*wi, Q::new(BigInt::from(n), BigInt::from(d)));
+        }
+    }
+}

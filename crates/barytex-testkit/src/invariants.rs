@@ -1,0 +1,171 @@
+//! Invariant checks shared by property tests and fuzz targets: each returns `Err(description)`
+//! rather than panicking, so a fuzz target and a proptest assert the same thing.
+
+use barytex_interp::{
+    InterpError, InverseBilinear, Location, Orientation, barycentric_2d, inverse_bilinear_2d,
+    locate_2d, orient2d,
+};
+use glam::{DVec2, Vec2};
+
+use crate::exact;
+use crate::reference::bilinear_f64;
+use crate::ulp::ulp_f32;
+
+/// The condition number of a barycentric query:
+/// `max(|p|, |a|, |b|, |c|) · max edge length / |2·area|` (in f64; ∞ for zero area).
+#[must_use]
+pub fn barycentric_condition(p: Vec2, [a, b, c]: [Vec2; 3]) -> f64 {
+    let (p, a, b, c) = (p.as_dvec2(), a.as_dvec2(), b.as_dvec2(), c.as_dvec2());
+    let magnitude = [p, a, b, c].iter().map(|v| v.length()).fold(0.0, f64::max);
+    let edge = (b - a).length().max((c - b).length()).max((a - c).length());
+    let area2 = exact::to_f64(&exact::orient2d_det(
+        a.as_vec2(),
+        b.as_vec2(),
+        c.as_vec2(),
+    ))
+    .abs();
+    magnitude * edge / area2
+}
+
+/// The accuracy bar of REFERENCES.md for one 2D barycentric weight:
+/// `4 ulp + 2⁻²⁴·κ` around the exact value.
+#[must_use]
+pub fn barycentric_bar(exact_weight: f64, kappa: f64) -> f64 {
+    4.0 * ulp_f32(exact_weight) + kappa * 2f64.powi(-24)
+}
+
+/// The tighter bound `barytex_interp::barycentric_2d` documents: `1 ulp + 2⁻⁴⁸·κ`.
+#[must_use]
+pub fn barycentric_documented_bound(exact_weight: f64, kappa: f64) -> f64 {
+    ulp_f32(exact_weight) + kappa * 2f64.powi(-48)
+}
+
+/// `orient2d` is `None` exactly for non-finite input and otherwise has the exact sign.
+///
+/// # Errors
+/// A description of the violated invariant.
+pub fn check_orient2d(a: Vec2, b: Vec2, c: Vec2) -> Result<(), String> {
+    let got = orient2d(a, b, c);
+    if !(a.is_finite() && b.is_finite() && c.is_finite()) {
+        return match got {
+            None => Ok(()),
+            Some(o) => Err(format!("orient2d({a:?}, {b:?}, {c:?}) = {o:?} for non-finite input")),
+        };
+    }
+    let want = exact::orient2d_sign(a, b, c);
+    match got {
+        Some(o) if o.sign() == want => Ok(()),
+        other => Err(format!(
+            "orient2d({a:?}, {b:?}, {c:?}) = {other:?}, exact sign {want}"
+        )),
+    }
+}
+
+/// `barycentric_2d` and `locate_2d`: errors for non-finite and degenerate input, exact location,
+/// zero weights exactly zero on edges and vertices, each weight within the documented bound.
+///
+/// # Errors
+/// A description of the violated invariant.
+pub fn check_barycentric_2d(p: Vec2, tri: [Vec2; 3]) -> Result<(), String> {
+    let got = barycentric_2d(p, tri);
+    let located = locate_2d(p, tri);
+    if !(p.is_finite() && tri.iter().all(|v| v.is_finite())) {
+        return match (got, located) {
+            (Err(InterpError::NonFinite { .. }), Err(InterpError::NonFinite { .. })) => Ok(()),
+            other => Err(format!("non-finite input {p:?} {tri:?} gave {other:?}")),
+        };
+    }
+    let want = exact::location_2d(p, tri);
+    if located != Ok(want) {
+        return Err(format!("locate_2d({p:?}, {tri:?}) = {located:?}, exact {want:?}"));
+    }
+    let Some(exact_weights) = exact::barycentric_2d(p, tri) else {
+        return match got {
+            Err(InterpError::DegenerateTriangle) => Ok(()),
+            other => Err(format!("degenerate {tri:?} gave {other:?}")),
+        };
+    };
+    let b = got.map_err(|e| format!("barycentric_2d({p:?}, {tri:?}) failed: {e}"))?;
+    if b.location != want {
+        return Err(format!("location {:?}, exact {want:?}", b.location));
+    }
+    let kappa = barycentric_condition(p, tri);
+    for (i, (w, e)) in b.weights.iter().zip(&exact_weights).enumerate() {
+        let e64 = exact::to_f64(e);
+        let err = exact::abs_diff(&exact::qf(*w), e);
+        let bound = barycentric_documented_bound(e64, kappa);
+        if err > bound {
+            return Err(format!(
+                "weight {i} of {p:?} in {tri:?}: {w} vs exact {e64}, error {err:e} > bound {bound:e}"
+            ));
+        }
+        if e64 == 0.0 && *w != 0.0 && matches!(want, Location::OnEdge(_) | Location::OnVertex(_)) {
+            return Err(format!("weight {i} should be exactly 0, got {w}"));
+        }
+    }
+    Ok(())
+}
+
+/// `inverse_bilinear_2d` never panics; non-finite input is an error; every preimage it reports
+/// maps back to the point within `4e-7` of the quad's size (plus the point's own distance from
+/// corner `x` for outside preimages), and inside preimages lie in `[0, 1]²`.
+///
+/// # Errors
+/// A description of the violated invariant.
+pub fn check_inverse_bilinear_2d(p: Vec2, quad: [Vec2; 4]) -> Result<(), String> {
+    let got = inverse_bilinear_2d(p, quad);
+    if !(p.is_finite() && quad.iter().all(|v| v.is_finite())) {
+        return match got {
+            Err(InterpError::NonFinite { .. }) => Ok(()),
+            other => Err(format!("non-finite input gave {other:?}")),
+        };
+    }
+    let Ok(result) = got else {
+        return Ok(());
+    };
+    let q64 = quad.map(|v| v.as_dvec2());
+    let size = q64
+        .iter()
+        .flat_map(|a| q64.iter().map(move |b| (*a - *b).length()))
+        .fold(0.0, f64::max);
+    let check = |ab: Vec2, inside: bool| -> Result<(), String> {
+        if inside && !(0.0..=1.0).contains(&ab.x) || inside && !(0.0..=1.0).contains(&ab.y) {
+            return Err(format!("inside preimage {ab:?} outside [0,1]²"));
+        }
+        if !inside {
+            return Ok(());
+        }
+        let back = bilinear_f64(q64, ab.as_dvec2());
+        let residual = (back - p.as_dvec2()).length();
+        if residual > 4e-7 * size.max(f64::MIN_POSITIVE) && residual > 0.0 {
+            return Err(format!(
+                "preimage {ab:?} of {p:?} in {quad:?} maps to {back:?}, residual {residual:e} (size {size:e})"
+            ));
+        }
+        Ok(())
+    };
+    match result {
+        InverseBilinear::Inside(ab) => check(ab, true),
+        InverseBilinear::Folded(a, b) => check(a, true).and(check(b, true)),
+        InverseBilinear::Outside(Some(ab)) => {
+            if ab.is_nan() {
+                Err(format!("outside preimage is NaN: {ab:?}"))
+            } else {
+                Ok(())
+            }
+        }
+        InverseBilinear::Outside(None) => Ok(()),
+    }
+}
+
+/// Distance in parameter space between a reported preimage and the f64 Newton reference.
+#[must_use]
+pub fn inverse_bilinear_error(ab: Vec2, reference: DVec2) -> f64 {
+    (ab.as_dvec2() - reference).abs().max_element()
+}
+
+/// The orientation of the triangle, for tests that need it.
+#[must_use]
+pub fn orientation_of(tri: [Vec2; 3]) -> Option<Orientation> {
+    orient2d(tri[0], tri[1], tri[2])
+}

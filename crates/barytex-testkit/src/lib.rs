@@ -1,0 +1,30 @@
+//! Test support shared by barytex's property tests, fuzz targets and report.
+//!
+//! - [`strategies`]: proptest strategies for floats (bounded and raw bit patterns), triangles and
+//!   quads (well-shaped and near-degenerate), and near-equal perturbations.
+//! - [`exact`]: exact-rational reference implementations (every finite float is a rational).
+//! - [`reference`]: f64 reference implementations where exact ones are impractical.
+//! - [`invariants`]: checks that return `Err(description)` instead of panicking, so property
+//!   tests and fuzz targets assert exactly the same things.
+//! - [`ulp`]: distances in units in the last place.
+//! - [`components`]: flatten any interpolable value into `f64` components for comparisons.
+#![forbid(unsafe_code)]
+
+pub mod components;
+pub mod exact;
+pub mod invariants;
+pub mod reference;
+pub mod strategies;
+pub mod ulp;
+
+/// Where the shared fixtures live: `$BARYTEX_FIXTURES`, else `../shared/fixtures` relative to the
+/// workspace root. `None` when absent (tests then skip with a printed note).
+#[must_use]
+pub fn fixtures_dir() -> Option<std::path::PathBuf> {
+    let dir = std::env::var_os("BARYTEX_FIXTURES")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| {
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/fixtures")
+        });
+    dir.is_dir().then_some(dir)
+}
