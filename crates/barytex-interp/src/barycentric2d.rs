@@ -94,7 +94,8 @@ pub fn locate_2d(p: Vec2, tri: [Vec2; 3]) -> Result<Location, InterpError> {
 
 /// Barycentric coordinates of `p` in the triangle `tri = [a, b, c]`, with exact classification.
 ///
-/// Signed areas come from exact-sign adaptive predicates in f64; each weight is its own area
+/// Signed areas are computed with an exact sign and a relative error below 2⁻³⁰ (an exact
+/// expansion sum where plain f64 is not accurate enough); each weight is its own area
 /// ratio (not `1 − β − γ`), so a point near any vertex is as accurate as near another. Zero
 /// weights are exactly `0.0` on edges and vertices. Works for both triangle orientations.
 ///
@@ -103,9 +104,11 @@ pub fn locate_2d(p: Vec2, tri: [Vec2; 3]) -> Result<Location, InterpError> {
 /// or infinite coordinates.
 ///
 /// # Accuracy
-/// Each weight is within `1 ulp + 2⁻⁴⁸·κ` of the exact rational value, where
-/// `κ = max(|p|, |a|, |b|, |c|) · max edge length / |2·area|`; that is well inside the bar of
-/// `4 ulp + 2⁻²⁴·κ` (tests `barycentric_2d_within_bar` and `hard_cases_within_bar`).
+/// Each weight is within 1 ulp of the exact rational value, whatever the triangle's shape,
+/// scale or offset (a weight beyond f32's range is the infinity of its sign). The bar of
+/// REFERENCES.md is `4 ulp + 2⁻²⁴·κ` with `κ = max(|p|, |a|, |b|, |c|) · max edge / |2·area|`
+/// (tests `barycentric_2d_within_bar`, `barycentric_2d_within_bar_scaled`, `total_on_any_bits`
+/// and `hard_cases_within_bar`).
 ///
 /// ```
 /// use barytex_interp::{barycentric_2d, Location};

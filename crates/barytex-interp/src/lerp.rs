@@ -20,13 +20,14 @@ macro_rules! exact_lerp {
             // Same sign: `b − a` cannot overflow and `a + t(b − a)` is exact at t = 0 and
             // consistent for a == b; clamping against b restores monotonicity and boundedness
             // that the rounding of `a + t(b − a)` could break near t = 1.
+            // The comparisons are written so that a NaN `x` falls through and is returned.
             let x = a + t * (b - a);
             if (t > 1.0) == (b > a) {
-                if b < x { x } else { b }
-            } else if x < b {
-                x
-            } else {
+                if b > x { b } else { x }
+            } else if b < x {
                 b
+            } else {
+                x
             }
         }
     };
@@ -49,8 +50,9 @@ exact_lerp!(
     /// `ε = f32::EPSILON` (test `lerp_accuracy_bound` in `tests/lerp.rs`).
     ///
     /// # Special values
-    /// A NaN input gives NaN, except that `t == 1` returns `b` as given. Infinite endpoints of
-    /// opposite sign give NaN for `0 < t < 1`. Never panics.
+    /// A NaN input gives NaN, except that `t == 1` returns `b` as given. An infinite endpoint
+    /// gives an infinity or NaN (infinite endpoints of opposite sign give NaN for `0 < t < 1`).
+    /// Never panics.
     ///
     /// ```
     /// use barytex_interp::lerp;

@@ -1,7 +1,6 @@
 //! Interpolation math for texturing and rasterization, exact where a sign decides topology.
 //!
-//! `barytex-interp` is the bottom crate of barytex: it depends only on [`glam`] (and the `robust`
-//! adaptive predicates), works without `std`, and every approximate function states an
+//! `barytex-interp` is the bottom crate of barytex: it depends only on [`glam`], works without `std`, and every approximate function states an
 //! `# Accuracy` bound that a test enforces (see `docs/ACCURACY.md` in the repository).
 //!
 //! | concept | items |
@@ -42,6 +41,7 @@ mod barycentric2d;
 mod barycentric3d;
 mod bilinear;
 mod combination;
+mod determinant;
 mod error;
 pub mod hard_cases;
 mod homogeneous;

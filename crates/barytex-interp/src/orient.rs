@@ -1,7 +1,6 @@
 //! Exact 2D orientation.
 
 use glam::Vec2;
-use robust::{Coord, orient2d as robust_orient2d};
 
 /// Which side of the directed line `a → b` the point `c` is on: the sign of the determinant
 /// `(b − a) × (c − a)`.
@@ -42,9 +41,9 @@ impl Orientation {
 
 /// The exact orientation of three points: the sign of `(b − a) × (c − a)`, never wrong.
 ///
-/// Uses Shewchuk's adaptive predicates (the `robust` crate) on the f32 inputs widened to f64,
-/// which is exact for every finite f32 input: products of f32 differences neither overflow nor
-/// underflow in f64. Most calls finish in the first, plain f64 stage.
+/// A plain f64 determinant with Shewchuk's error bound decides almost every call; the rest are
+/// settled by an exact expansion sum of the six f32 × f32 products, each exact in f64. So the
+/// sign is exact for every finite f32 input, huge, tiny and subnormal ones included.
 ///
 /// Returns `None` when an input is NaN or infinite.
 ///
@@ -64,19 +63,13 @@ pub fn orient2d(a: Vec2, b: Vec2, c: Vec2) -> Option<Orientation> {
     Some(Orientation::of_determinant(det))
 }
 
-/// An approximation of `(b − a) × (c − a)` whose sign is exact; `None` for non-finite input.
+/// `(b − a) × (c − a)` with an exact sign and a relative error below 2⁻³⁰; `None` for non-finite
+/// input.
 pub(crate) fn orient2d_value(a: Vec2, b: Vec2, c: Vec2) -> Option<f64> {
     if !(a.is_finite() && b.is_finite() && c.is_finite()) {
         return None;
     }
-    Some(robust_orient2d(coord(a), coord(b), coord(c)))
-}
-
-fn coord(p: Vec2) -> Coord<f64> {
-    Coord {
-        x: f64::from(p.x),
-        y: f64::from(p.y),
-    }
+    Some(crate::determinant::orient2d_det(a, b, c))
 }
 
 pub(crate) mod methods {
