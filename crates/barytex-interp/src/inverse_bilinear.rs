@@ -49,12 +49,14 @@ const INSIDE_SLACK: f64 = 1e-9;
 /// or at offset 1e7 behaves like a unit quad. A point exactly on the boundary is inside;
 /// inside results are clamped to `[0, 1]²`.
 ///
-/// When `s₁(β) = s₂(β)` (an edge of the quad collapsed to a point), every `α` maps to the same
-/// point and `α = 0` is returned.
+/// When `s₁(β) = s₂(β)` (an edge of the quad collapsed to a point) and `p` is that point, every
+/// `α` maps to it and `α = 0` is returned. At the point where all rulings of a self-intersecting
+/// quad cross, every `β` is a preimage: the answer is [`InverseBilinear::Folded`] with the
+/// preimages at `β = 0` and `β = 1`.
 ///
 /// # Errors
 /// [`InterpError::NonFinite`] for NaN or infinite input; [`InterpError::DegenerateQuad`] when the
-/// quadratic vanishes identically (e.g. all corners collinear).
+/// corners lie on one line (decided exactly) or the quadratic vanishes identically.
 ///
 /// # Accuracy
 /// Inside convex quads: within `3e-7·(1 + κ)` of the exact preimage of the f32 input point, where
@@ -78,11 +80,14 @@ pub fn inverse_bilinear_2d(p: Vec2, quad: [Vec2; 4]) -> Result<InverseBilinear, 
     if !quad.iter().all(|c| c.is_finite()) {
         return Err(InterpError::NonFinite { what: "quad" });
     }
-    let origin = quad[0].as_dvec2();
-    solve(
-        p.as_dvec2() - origin,
-        quad.map(|c| c.as_dvec2() - origin),
-    )
+    let [x, y, z, w] = quad;
+    let det = crate::determinant::orient2d_det;
+    if det(x, y, z) == 0.0 && det(x, z, w) == 0.0 && det(x, y, w) == 0.0 && det(y, z, w) == 0.0 {
+        // All four corners on one line (exactly): the map collapses everywhere.
+        return Err(InterpError::DegenerateQuad);
+    }
+    let origin = x.as_dvec2();
+    solve(p.as_dvec2() - origin, quad.map(|c| c.as_dvec2() - origin))
 }
 
 /// Invert the bilinear map of a quad in 3D, planar or not.
@@ -157,12 +162,23 @@ fn solve(u: DVec2, [x, y, z, w]: [DVec2; 4]) -> Result<InverseBilinear, InterpEr
     let a = (w - x).perp_dot(z - y);
     let b = (z - y).perp_dot(u - x) - (w - x).perp_dot(u - y);
     let c = (u - x).perp_dot(u - y);
+    let quad = [x, y, z, w];
+    let size = quad
+        .iter()
+        .map(|corner| (*corner - x).abs().max_element())
+        .fold(0.0, f64::max);
     if a == 0.0 && b == 0.0 {
-        return if c == 0.0 {
-            Err(InterpError::DegenerateQuad)
-        } else {
-            Ok(InverseBilinear::Outside(None))
-        };
+        if c != 0.0 {
+            return Ok(InverseBilinear::Outside(None));
+        }
+        // Every β solves the equation: either the quad is flat (all corners on one line) or `u`
+        // is the point where a self-intersecting quad's rulings all cross.
+        let flat = (y - x).perp_dot(z - x) == 0.0 && (z - x).perp_dot(w - x) == 0.0;
+        let ends = [0.0, 1.0].map(|beta| DVec2::new(alpha_for(u, quad, beta), beta));
+        if flat || ends.iter().any(|ab| !maps_to(quad, *ab, u, size)) {
+            return Err(InterpError::DegenerateQuad);
+        }
+        return Ok(InverseBilinear::Folded(ends[0].as_vec2(), ends[1].as_vec2()));
     }
     let disc = b * b - 4.0 * a * c;
     if disc < 0.0 || !disc.is_finite() {
@@ -180,7 +196,13 @@ fn solve(u: DVec2, [x, y, z, w]: [DVec2; 4]) -> Result<InverseBilinear, InterpEr
         if !beta.is_finite() || (slot == 1 && roots[0] == beta) {
             continue;
         }
-        let ab = DVec2::new(alpha_for(u, [x, y, z, w], beta), beta);
+        let ab = DVec2::new(alpha_for(u, quad, beta), beta);
+        // A root of the quadratic is a preimage only if it maps back to `u`: where
+        // `s₁(β) = s₂(β)` the equation `(s₁ − u) × (s₂ − u) = 0` holds for every `u`, and on
+        // nearly flat quads rounding can produce such spurious roots.
+        if !maps_to(quad, ab, u, size) {
+            continue;
+        }
         let distance = distance_outside_unit_square(ab);
         if distance <= INSIDE_SLACK {
             inside[slot] = Some(ab.clamp(DVec2::ZERO, DVec2::ONE));
@@ -196,10 +218,32 @@ fn solve(u: DVec2, [x, y, z, w]: [DVec2; 4]) -> Result<InverseBilinear, InterpEr
     })
 }
 
+fn s1_of([x, _, _, w]: [DVec2; 4], beta: f64) -> DVec2 {
+    x + (w - x) * beta
+}
+
+fn s2_of([_, y, z, _]: [DVec2; 4], beta: f64) -> DVec2 {
+    y + (z - y) * beta
+}
+
+/// How far, relative to the quad's size, a candidate may map from `u`: 2⁻²⁶, a quarter of what
+/// rounding the answer to f32 moves it, and far above f64 rounding of well-posed roots.
+const RESIDUAL_TOLERANCE: f64 = 1.0 / (1u64 << 26) as f64;
+
+/// Whether `(α, β)` maps back to `u`, relative to the quad's size (and to `|(α, β)|` for
+/// preimages far outside the unit square).
+fn maps_to(quad: [DVec2; 4], ab: DVec2, u: DVec2, size: f64) -> bool {
+    let s1 = s1_of(quad, ab.y);
+    let s2 = s2_of(quad, ab.y);
+    let back = s1 + (s2 - s1) * ab.x;
+    let scale = size * (1.0 + ab.abs().max_element());
+    (back - u).abs().max_element() <= RESIDUAL_TOLERANCE * scale
+}
+
 /// α by projecting `u` onto `s₁(β) s₂(β)`; 0 when that segment collapses to a point.
-fn alpha_for(u: DVec2, [x, y, z, w]: [DVec2; 4], beta: f64) -> f64 {
-    let s1 = x + (w - x) * beta;
-    let s2 = y + (z - y) * beta;
+fn alpha_for(u: DVec2, quad: [DVec2; 4], beta: f64) -> f64 {
+    let s1 = s1_of(quad, beta);
+    let s2 = s2_of(quad, beta);
     let d = s2 - s1;
     let den = d.length_squared();
     if den == 0.0 { 0.0 } else { (u - s1).dot(d) / den }

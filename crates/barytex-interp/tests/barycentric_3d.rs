@@ -1,0 +1,128 @@
+//! 3D barycentric coordinates: cross-product form in f64 against exact rationals, slivers, and
+//! the Cramer form's 1/aspect² degradation measured.
+#![allow(clippy::unwrap_used, missing_docs)]
+
+use barytex_interp::hard_cases::triangles_3d;
+use barytex_interp::methods::{
+    PrecomputedTriangle3, barycentric_3d_cramer_f32, barycentric_3d_cross_f32,
+};
+use barytex_interp::{InterpError, barycentric_3d};
+use barytex_testkit::exact::{self, qf};
+use barytex_testkit::strategies::vec3_in;
+use barytex_testkit::ulp::ulp_f32;
+use glam::Vec3;
+use proptest::prelude::*;
+
+/// κ for a 3D query: `max(|p|, |a|, |b|, |c|) · max edge / |2·area|`.
+fn kappa(p: Vec3, [a, b, c]: [Vec3; 3]) -> f64 {
+    let (p, a, b, c) = (p.as_dvec3(), a.as_dvec3(), b.as_dvec3(), c.as_dvec3());
+    let m = [p, a, b, c].iter().map(|v| v.length()).fold(0.0, f64::max);
+    let e = (b - a).length().max((c - b).length()).max((a - c).length());
+    m * e / (b - a).cross(c - a).length()
+}
+
+/// The documented bound of `barycentric_3d`: `1 ulp + 2⁻⁴⁶·κ`.
+fn check(p: Vec3, tri: [Vec3; 3]) -> Result<(), String> {
+    let got = barycentric_3d(p, tri).map_err(|e| e.to_string())?;
+    let want = exact::barycentric_3d(p, tri).ok_or("degenerate")?;
+    let k = kappa(p, tri);
+    for (g, w) in got.iter().zip(&want) {
+        let w64 = exact::to_f64(w);
+        let err = exact::abs_diff(&qf(*g), w);
+        let bound = ulp_f32(w64) + k * 2f64.powi(-46);
+        if err > bound {
+            return Err(format!("{p:?} in {tri:?}: {g} vs {w64}, error {err:e} > {bound:e}"));
+        }
+    }
+    Ok(())
+}
+
+fn well_shaped_3d() -> impl Strategy<Value = [Vec3; 3]> {
+    [vec3_in(-100.0, 100.0), vec3_in(-100.0, 100.0), vec3_in(-100.0, 100.0)].prop_filter(
+        "well shaped",
+        |[a, b, c]| {
+            let n = (*b - *a).cross(*c - *a).length();
+            let e = (*b - *a).length_squared().max((*c - *a).length_squared()).max((*c - *b).length_squared());
+            n >= 0.05 * e
+        },
+    )
+}
+
+proptest! {
+    #[test]
+    fn barycentric_3d_within_bar(tri in well_shaped_3d(), t in (-0.5f32..1.5, -0.5f32..1.5), lift in -10.0f32..10.0) {
+        let [a, b, c] = tri;
+        let n = (b - a).cross(c - a).normalize();
+        // A point off the plane: its weights are those of its projection.
+        let p = a + (b - a) * t.0 + (c - a) * t.1 + n * lift;
+        check(p, tri).map_err(TestCaseError::fail)?;
+    }
+
+    /// The seed's precomputed form and the f32 cross form agree with the default on
+    /// well-shaped triangles (they differ only in how error grows on slivers).
+    #[test]
+    fn methods_agree_on_well_shaped(tri in well_shaped_3d(), t in (0.0f32..1.0, 0.0f32..1.0)) {
+        let [a, b, c] = tri;
+        let p = a + (b - a) * t.0 * 0.5 + (c - a) * t.1 * 0.5;
+        let want = barycentric_3d(p, tri).unwrap();
+        let pre = PrecomputedTriangle3::new(tri).unwrap().weights(p);
+        for got in [pre, barycentric_3d_cross_f32(p, tri), barycentric_3d_cramer_f32(p, tri)] {
+            for (g, w) in got.iter().zip(want) {
+                prop_assert!((g - w).abs() < 1e-3, "{got:?} vs {want:?}");
+            }
+        }
+    }
+}
+
+/// The slivers of the hard-case table: the default stays within its bound at aspect 1e-7, and
+/// the Cramer dot form is measurably worse — its error grows like 1/aspect².
+#[test]
+fn slivers_3d_within_bar() {
+    let mut cramer_worst_at_1e_4 = 0.0f64;
+    for case in triangles_3d() {
+        check(case.point, case.triangle).unwrap_or_else(|e| panic!("{} {}: {e}", case.name, case.parameter));
+        let want = exact::barycentric_3d(case.point, case.triangle).unwrap();
+        let cramer = barycentric_3d_cramer_f32(case.point, case.triangle);
+        let err = cramer
+            .iter()
+            .zip(&want)
+            .map(|(g, w)| if g.is_finite() { exact::abs_diff(&qf(*g), w) } else { f64::INFINITY })
+            .fold(0.0, f64::max);
+        println!("{} {:e}: Cramer f32 max error {err:e}", case.name, case.parameter);
+        if case.name == "tilted sliver" && case.parameter <= 1e-4 {
+            cramer_worst_at_1e_4 = cramer_worst_at_1e_4.max(err);
+        }
+    }
+    assert!(cramer_worst_at_1e_4 > 1e-2, "Cramer form unexpectedly accurate on slivers: {cramer_worst_at_1e_4}");
+}
+
+#[test]
+fn degenerate_and_non_finite_3d() {
+    let line = [Vec3::ZERO, Vec3::ONE, Vec3::splat(2.0)];
+    assert_eq!(barycentric_3d(Vec3::X, line), Err(InterpError::DegenerateTriangle));
+    assert_eq!(PrecomputedTriangle3::new(line), Err(InterpError::DegenerateTriangle));
+    for v in barytex_interp::hard_cases::NON_FINITE {
+        let tri = [Vec3::X, Vec3::Y, Vec3::Z];
+        assert_eq!(barycentric_3d(Vec3::splat(v), tri), Err(InterpError::NonFinite { what: "point" }));
+        assert_eq!(
+            barycentric_3d(Vec3::ZERO, [Vec3::X, Vec3::new(0.0, v, 0.0), Vec3::Z]),
+            Err(InterpError::NonFinite { what: "triangle" })
+        );
+        assert!(PrecomputedTriangle3::new([Vec3::splat(v), Vec3::Y, Vec3::Z]).is_err());
+    }
+}
+
+#[test]
+fn vertices_and_centroid_3d() {
+    let tri = [Vec3::new(1.0, 0.0, 2.0), Vec3::new(-1.0, 3.0, 0.5), Vec3::new(4.0, 1.0, -1.0)];
+    for (i, v) in tri.iter().enumerate() {
+        let w = barycentric_3d(*v, tri).unwrap();
+        let mut want = [0.0; 3];
+        want[i] = 1.0;
+        assert_eq!(w, want);
+    }
+    let c = (tri[0] + tri[1] + tri[2]) / 3.0;
+    for w in barycentric_3d(c, tri).unwrap() {
+        assert!((w - 1.0 / 3.0).abs() < 1e-6);
+    }
+}

@@ -1,0 +1,252 @@
+//! Bilinear interpolation and its inverse: the seed's Example 10, Theorem 11 and Corollary 12 as
+//! property tests, scale invariance, parallelograms without thresholds, folded quads, the
+//! hard-case table, special values.
+#![allow(clippy::unwrap_used, missing_docs)]
+
+use barytex_interp::hard_cases::quads;
+use barytex_interp::{InterpError, InverseBilinear, bilinear, inverse_bilinear_2d, inverse_bilinear_3d};
+use barytex_testkit::exact::{self, Q};
+use barytex_testkit::invariants::{check_inverse_bilinear_2d, inverse_bilinear_error};
+use barytex_testkit::reference::{bilinear_f64, inverse_bilinear_newton, quilez_inverse_bilinear_f32};
+use barytex_testkit::strategies::{convex_quad, near_parallelogram_quad, non_planar_quad_3d, vec2_bits, vec2_in};
+use glam::{DVec2, Vec2, Vec3};
+use num_bigint::BigInt;
+use proptest::prelude::*;
+
+const EXAMPLE_10: [Vec2; 4] = [Vec2::new(0.0, 0.0), Vec2::new(4.0, 0.0), Vec2::new(5.0, 3.0), Vec2::new(0.0, 2.0)];
+
+/// Map `(α, β)` forward in f64 and round to f32: the input point of a round trip.
+fn forward(quad: [Vec2; 4], ab: Vec2) -> Vec2 {
+    bilinear_f64(quad.map(|v| v.as_dvec2()), ab.as_dvec2()).as_vec2()
+}
+
+/// The reference preimage of the (rounded) f32 point, by Newton from the known `(α, β)`.
+fn reference(quad: [Vec2; 4], p: Vec2, start: Vec2) -> DVec2 {
+    inverse_bilinear_newton(p.as_dvec2(), quad.map(|v| v.as_dvec2()), start.as_dvec2()).unwrap()
+}
+
+/// Seed 000, Example 10: the four (α, β) pairs map to these exact points and back.
+#[test]
+fn seed_example_10() {
+    let cases = [
+        ((1, 1), (0, 1), (4, 1), (0, 1)),
+        ((1, 3), (1, 1), (5, 3), (7, 3)),
+        ((1, 2), (1, 4), (17, 8), (5, 8)),
+        ((2, 3), (1, 3), (26, 9), (8, 9)),
+    ];
+    let r = |(n, d): (i64, i64)| Q::new(BigInt::from(n), BigInt::from(d));
+    for (a, b, x, y) in cases {
+        let (af, bf) = (exact::to_f64(&r(a)) as f32, exact::to_f64(&r(b)) as f32);
+        // Exact forward map of the f32 parameters, against the exact point of the exact ones.
+        let p = exact::bilinear_2d(EXAMPLE_10, f64::from(af), f64::from(bf));
+        let (xf, yf) = (exact::to_f64(&r(x)), exact::to_f64(&r(y)));
+        assert!((exact::to_f64(&p[0]) - xf).abs() < 1e-6 && (exact::to_f64(&p[1]) - yf).abs() < 1e-6);
+        let ours = bilinear(EXAMPLE_10, af, bf);
+        assert!((f64::from(ours.x) - xf).abs() < 1e-6 && (f64::from(ours.y) - yf).abs() < 1e-6, "{ours:?}");
+        // And back.
+        let ab = inverse_bilinear_2d(Vec2::new(xf as f32, yf as f32), EXAMPLE_10).unwrap().inside().unwrap();
+        assert!((ab - Vec2::new(af, bf)).abs().max_element() < 3e-7, "{ab:?} vs ({af}, {bf})");
+    }
+    assert_eq!(bilinear(EXAMPLE_10, 1.0, 0.0), Vec2::new(4.0, 0.0));
+    assert_eq!(bilinear(EXAMPLE_10, 0.5, 0.25), Vec2::new(17.0 / 8.0, 5.0 / 8.0));
+}
+
+#[test]
+fn corners_are_exact() {
+    let quad = [Vec2::new(0.1, 0.2), Vec2::new(4.3, 0.7), Vec2::new(5.1, 3.3), Vec2::new(0.3, 2.9)];
+    assert_eq!(bilinear(quad, 0.0, 0.0), quad[0]);
+    assert_eq!(bilinear(quad, 1.0, 0.0), quad[1]);
+    assert_eq!(bilinear(quad, 1.0, 1.0), quad[2]);
+    assert_eq!(bilinear(quad, 0.0, 1.0), quad[3]);
+    for (i, c) in quad.iter().enumerate() {
+        let ab = inverse_bilinear_2d(*c, quad).unwrap().inside().unwrap();
+        let want = [Vec2::ZERO, Vec2::X, Vec2::ONE, Vec2::Y][i];
+        assert!((ab - want).abs().max_element() <= 1e-7, "corner {i}: {ab:?}");
+    }
+}
+
+proptest! {
+    /// The forward map's documented accuracy: three lerps, ≤ 6·ε·max|corner|.
+    #[test]
+    fn bilinear_accuracy_bound(quad in convex_quad(), a in 0.0f32..=1.0, b in 0.0f32..=1.0) {
+        let got = bilinear(quad, a, b);
+        let want = exact::bilinear_2d(quad, a.into(), b.into());
+        let m = quad.iter().map(|v| v.abs().max_element()).fold(0.0f32, f32::max);
+        let bound = 6.0 * f64::from(f32::EPSILON) * f64::from(m);
+        for (g, w) in [got.x, got.y].iter().zip(&want) {
+            prop_assert!(exact::abs_diff(&exact::qf(*g), w) <= bound);
+        }
+    }
+
+    /// Theorem 11: on a planar convex quad the map is a bijection of [0,1]²; the inverse round
+    /// trip is within 3e-7 of the reference preimage (the bar, at unit scale).
+    #[test]
+    fn inverse_bilinear_round_trip(quad in convex_quad(), a in 0.0f32..=1.0, b in 0.0f32..=1.0) {
+        let ab = Vec2::new(a, b);
+        let p = forward(quad, ab);
+        let result = inverse_bilinear_2d(p, quad).unwrap();
+        let got = match result {
+            InverseBilinear::Inside(v) => v,
+            other => return Err(TestCaseError::fail(format!("{other:?} for {ab:?} in {quad:?}"))),
+        };
+        let err = inverse_bilinear_error(got, reference(quad, p, ab));
+        prop_assert!(err <= 3e-7, "error {err:e} for {ab:?} in {quad:?}");
+        check_inverse_bilinear_2d(p, quad).map_err(TestCaseError::fail)?;
+    }
+
+    /// Scale invariance: the same quad scaled by powers of two (exactly) gives bit-identical
+    /// preimages, from 2⁻¹⁰⁰ to 2¹⁰⁰.
+    #[test]
+    fn inverse_bilinear_scale_invariant(quad in convex_quad(), a in 0.0f32..=1.0, b in 0.0f32..=1.0, k in -100i32..100) {
+        let p = forward(quad, Vec2::new(a, b));
+        let s = 2f32.powi(k);
+        let base = inverse_bilinear_2d(p, quad).unwrap();
+        let scaled = inverse_bilinear_2d(p * s, quad.map(|v| v * s)).unwrap();
+        prop_assert_eq!(base, scaled);
+    }
+
+    /// Parallelograms (A = 0 exactly) and quads a few ulps from one: no threshold, full accuracy.
+    /// The thresholded Quilez/pbrt port is measured on the same inputs in the report.
+    #[test]
+    fn parallelograms_need_no_threshold(quad in near_parallelogram_quad(), a in 0.0f32..=1.0, b in 0.0f32..=1.0) {
+        let ab = Vec2::new(a, b);
+        let p = forward(quad, ab);
+        let got = inverse_bilinear_2d(p, quad).unwrap().inside();
+        prop_assert!(got.is_some(), "{p:?} not found inside {quad:?}");
+        let err = inverse_bilinear_error(got.unwrap(), reference(quad, p, ab));
+        prop_assert!(err <= 3e-7, "error {err:e}");
+    }
+
+    /// Points outside a convex quad are reported outside; points inside are found inside. (The
+    /// bilinear map extended to all of ℝ² folds, so an outside (α, β) can map into the quad:
+    /// the test decides inside/outside by the quad itself, exactly.)
+    #[test]
+    fn outside_points_reported(quad in convex_quad(), p in vec2_in(-20.0, 20.0)) {
+        let in_tri = |t: [Vec2; 3]| barytex_interp::locate_2d(p, t).unwrap().is_inside_closed();
+        let inside = in_tri([quad[0], quad[1], quad[2]]) || in_tri([quad[0], quad[2], quad[3]]);
+        let result = inverse_bilinear_2d(p, quad).unwrap();
+        match result {
+            InverseBilinear::Inside(_) => prop_assert!(inside, "{p:?} reported inside {quad:?}"),
+            InverseBilinear::Outside(_) => prop_assert!(!inside, "{p:?} reported outside {quad:?}"),
+            InverseBilinear::Folded(..) => return Err(TestCaseError::fail("a convex quad folded")),
+        }
+        if let InverseBilinear::Outside(Some(ab)) = result {
+            let back = forward(quad, ab);
+            prop_assert!((back - p).length() <= 1e-4 * (1.0 + p.length()), "{ab:?} maps to {back:?}");
+        }
+    }
+
+    /// Corollary 12: four non-coplanar points; the map is a bijection onto the surface and the
+    /// 3D inverse recovers (α, β) for points on it.
+    #[test]
+    fn inverse_bilinear_3d_round_trip_non_planar(quad in non_planar_quad_3d(), a in 0.0f32..=1.0, b in 0.0f32..=1.0) {
+        let p = bilinear(quad.map(|v| v.as_dvec3()), a, b).as_vec3();
+        let got = inverse_bilinear_3d(p, quad).unwrap();
+        let v = match got {
+            InverseBilinear::Inside(v) => v,
+            other => return Err(TestCaseError::fail(format!("{other:?} for ({a}, {b})"))),
+        };
+        let diameter = quad.iter().flat_map(|x| quad.iter().map(move |y| (*x - *y).length())).fold(0.0, f32::max);
+        let back = bilinear(quad.map(|v| v.as_dvec3()), v.x, v.y);
+        prop_assert!((back - p.as_dvec3()).length() <= 1e-6 * f64::from(diameter), "{v:?} vs ({a}, {b})");
+    }
+
+    /// A planar quad embedded in 3D (rotated, then rounded to f32, so very slightly non-planar)
+    /// inverts like the 2D quad.
+    #[test]
+    fn inverse_bilinear_3d_planar(quad in convex_quad(), a in 0.0f32..=1.0, b in 0.0f32..=1.0) {
+        let rot = glam::Quat::from_euler(glam::EulerRot::XYZ, 0.3, -1.1, 0.7);
+        let q3 = quad.map(|v| rot * v.extend(0.0));
+        let p = bilinear(q3.map(|v| v.as_dvec3()), a, b).as_vec3();
+        let v = inverse_bilinear_3d(p, q3).unwrap().inside();
+        prop_assert!(v.is_some());
+        let v = v.unwrap();
+        prop_assert!((v - Vec2::new(a, b)).abs().max_element() <= 1e-5, "{v:?} vs ({a}, {b})");
+    }
+
+    #[test]
+    fn inverse_bilinear_total_on_any_bits(p in vec2_bits(), q in [vec2_bits(), vec2_bits(), vec2_bits(), vec2_bits()]) {
+        check_inverse_bilinear_2d(p, q).map_err(TestCaseError::fail)?;
+    }
+
+    #[test]
+    fn inverse_bilinear_invariants_on_random(p in vec2_in(-20.0, 20.0), q in [vec2_in(-10.0, 10.0), vec2_in(-10.0, 10.0), vec2_in(-10.0, 10.0), vec2_in(-10.0, 10.0)]) {
+        check_inverse_bilinear_2d(p, q).map_err(TestCaseError::fail)?;
+    }
+}
+
+/// The seed's Figure IV.13: a non-convex (arrow-head) quad folds, so some points have two
+/// preimages in [0,1]²; both are reported and both map back.
+#[test]
+fn non_convex_quad_reports_both_roots() {
+    // A "bow-tie": corners x and y swapped relative to a convex quad.
+    let quad = [Vec2::new(0.0, 0.0), Vec2::new(4.0, 4.0), Vec2::new(4.0, 0.0), Vec2::new(0.0, 4.0)];
+    // Where the two crossing edges meet, every β is a preimage (α = 1/2).
+    assert_eq!(
+        inverse_bilinear_2d(Vec2::new(2.0, 2.0), quad),
+        Ok(InverseBilinear::Folded(Vec2::new(0.5, 0.0), Vec2::new(0.5, 1.0)))
+    );
+    let mut folded = 0;
+    for i in 1..20 {
+        for j in 1..20 {
+            let p = Vec2::new(i as f32 * 0.2, j as f32 * 0.2);
+            let r = inverse_bilinear_2d(p, quad).unwrap();
+            check_inverse_bilinear_2d(p, quad).unwrap();
+            if let InverseBilinear::Folded(a, b) = r {
+                folded += 1;
+                assert_ne!(a, b);
+                for ab in [a, b] {
+                    let back = forward(quad, ab);
+                    assert!((back - p).length() < 1e-5, "{ab:?} maps to {back:?}, not {p:?}");
+                }
+            }
+        }
+    }
+    assert!(folded > 0, "no folded point found in a bow-tie quad");
+}
+
+/// Acceptance: the hard-case quads round-trip within 3e-7 (parameter space), including tiny,
+/// subnormal and offset quads; the Quilez/pbrt port is measured on the same cases.
+#[test]
+fn hard_case_quads_within_bar() {
+    let mut quilez_worst: f64 = 0.0;
+    for case in quads() {
+        let p = forward(case.quad, case.alpha_beta);
+        let got = inverse_bilinear_2d(p, case.quad)
+            .unwrap()
+            .inside()
+            .unwrap_or_else(|| panic!("{} {}: not inside", case.name, case.parameter));
+        let reference = reference(case.quad, p, case.alpha_beta);
+        let err = inverse_bilinear_error(got, reference);
+        // κ: offset quads lose the point's own rounding, relative to their size.
+        let size = (case.quad[2] - case.quad[0]).length();
+        let offset_rounding = f64::from(p.abs().max_element()) * 2f64.powi(-24) / f64::from(size);
+        assert!(err <= 3e-7 + 4.0 * offset_rounding, "{} {}: error {err:e}", case.name, case.parameter);
+        let q = quilez_inverse_bilinear_f32(p, case.quad);
+        let qerr = if q.is_finite() { inverse_bilinear_error(q, reference) } else { f64::INFINITY };
+        println!("{} {:e}: ours {err:e}, Quilez/pbrt port {qerr:e}", case.name, case.parameter);
+        quilez_worst = quilez_worst.max(qerr);
+    }
+    assert!(quilez_worst > 1e-3, "the table no longer shows the threshold's failure");
+}
+
+#[test]
+fn degenerate_and_non_finite_quads() {
+    let line = [Vec2::ZERO, Vec2::ONE, Vec2::splat(2.0), Vec2::splat(3.0)];
+    assert_eq!(inverse_bilinear_2d(Vec2::splat(0.5), line), Err(InterpError::DegenerateQuad));
+    let point = [Vec2::ONE; 4];
+    assert_eq!(inverse_bilinear_2d(Vec2::ONE, point), Err(InterpError::DegenerateQuad));
+    assert_eq!(inverse_bilinear_2d(Vec2::new(5.0, 0.0), point), Err(InterpError::DegenerateQuad));
+    // A triangle-shaped quad (y = z): its apex has a whole segment of preimages, β = 0 … 1 at α = 1.
+    let tri_quad = [Vec2::ZERO, Vec2::X, Vec2::X, Vec2::Y];
+    assert!(inverse_bilinear_2d(Vec2::new(0.25, 0.25), tri_quad).unwrap().inside().is_some());
+    for v in barytex_interp::hard_cases::NON_FINITE {
+        assert_eq!(inverse_bilinear_2d(Vec2::new(v, 0.0), EXAMPLE_10), Err(InterpError::NonFinite { what: "point" }));
+        let mut q = EXAMPLE_10;
+        q[2].y = v;
+        assert_eq!(inverse_bilinear_2d(Vec2::ONE, q), Err(InterpError::NonFinite { what: "quad" }));
+        assert!(inverse_bilinear_3d(Vec3::splat(v), [Vec3::X, Vec3::Y, Vec3::Z, Vec3::ONE]).is_err());
+    }
+    let line3 = [Vec3::ZERO, Vec3::ONE, Vec3::splat(2.0), Vec3::splat(3.0)];
+    assert!(inverse_bilinear_3d(Vec3::ONE, line3).is_err());
+}
