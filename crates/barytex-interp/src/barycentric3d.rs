@@ -45,11 +45,7 @@ pub fn barycentric_3d(p: Vec3, tri: [Vec3; 3]) -> Result<[f32; 3], InterpError> 
         return Err(InterpError::DegenerateTriangle);
     }
     let area = |q: DVec3, r: DVec3| (q - p).cross(r - p).dot(n) / nn;
-    Ok([
-        area(b, c) as f32,
-        area(c, a) as f32,
-        area(a, b) as f32,
-    ])
+    Ok([area(b, c) as f32, area(c, a) as f32, area(a, b) as f32])
 }
 
 pub(crate) mod methods {

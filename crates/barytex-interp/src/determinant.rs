@@ -36,7 +36,14 @@ pub(crate) fn orient2d_det(a: Vec2, b: Vec2, c: Vec2) -> f64 {
 /// cx·by`, summed exactly as a floating-point expansion, then rounded.
 #[cold]
 fn exact_det(ax: f64, ay: f64, bx: f64, by: f64, cx: f64, cy: f64) -> f64 {
-    let products = [ax * by, -(ax * cy), bx * cy, -(bx * ay), cx * ay, -(cx * by)];
+    let products = [
+        ax * by,
+        -(ax * cy),
+        bx * cy,
+        -(bx * ay),
+        cx * ay,
+        -(cx * by),
+    ];
     let mut expansion = [0.0f64; 6];
     let mut len = 0;
     for p in products {

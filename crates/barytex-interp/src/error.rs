@@ -49,7 +49,10 @@ impl fmt::Display for InterpError {
                 write!(f, "weights sum to {sum}, not 1")
             }
             Self::NegativeWeight { index, weight } => {
-                write!(f, "weight {index} is negative ({weight}) in a convex combination")
+                write!(
+                    f,
+                    "weight {index} is negative ({weight}) in a convex combination"
+                )
             }
         }
     }

@@ -178,7 +178,10 @@ fn solve(u: DVec2, [x, y, z, w]: [DVec2; 4]) -> Result<InverseBilinear, InterpEr
         if flat || ends.iter().any(|ab| !maps_to(quad, *ab, u, size)) {
             return Err(InterpError::DegenerateQuad);
         }
-        return Ok(InverseBilinear::Folded(ends[0].as_vec2(), ends[1].as_vec2()));
+        return Ok(InverseBilinear::Folded(
+            ends[0].as_vec2(),
+            ends[1].as_vec2(),
+        ));
     }
     let disc = b * b - 4.0 * a * c;
     if disc < 0.0 || !disc.is_finite() {
@@ -246,7 +249,11 @@ fn alpha_for(u: DVec2, quad: [DVec2; 4], beta: f64) -> f64 {
     let s2 = s2_of(quad, beta);
     let d = s2 - s1;
     let den = d.length_squared();
-    if den == 0.0 { 0.0 } else { (u - s1).dot(d) / den }
+    if den == 0.0 {
+        0.0
+    } else {
+        (u - s1).dot(d) / den
+    }
 }
 
 fn distance_outside_unit_square(ab: DVec2) -> f64 {

@@ -97,8 +97,8 @@ pub(crate) mod methods {
     pub fn orient2d_dop_f32(a: Vec2, b: Vec2, c: Vec2) -> Orientation {
         let u = b - a;
         let v = c - a;
-        Orientation::of_determinant(f64::from(crate::barycentric2d::methods::difference_of_products(
-            u.x, v.y, u.y, v.x,
-        )))
+        Orientation::of_determinant(f64::from(
+            crate::barycentric2d::methods::difference_of_products(u.x, v.y, u.y, v.x),
+        ))
     }
 }

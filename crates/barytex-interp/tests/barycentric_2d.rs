@@ -3,7 +3,9 @@
 #![allow(clippy::unwrap_used, missing_docs)]
 
 use barytex_interp::hard_cases::triangles_2d;
-use barytex_interp::methods::{barycentric_2d_dop_f32, barycentric_2d_f64, barycentric_2d_naive_f32};
+use barytex_interp::methods::{
+    barycentric_2d_dop_f32, barycentric_2d_f64, barycentric_2d_naive_f32,
+};
 use barytex_interp::{InterpError, Location, barycentric_2d, interpolate3, locate_2d};
 use barytex_testkit::exact::{self, Q, qf};
 use barytex_testkit::invariants::{barycentric_bar, barycentric_condition, check_barycentric_2d};
@@ -14,7 +16,11 @@ use glam::Vec2;
 use num_bigint::BigInt;
 use proptest::prelude::*;
 
-const SEED_TRIANGLE: [Vec2; 3] = [Vec2::new(0.0, 0.0), Vec2::new(2.0, 3.0), Vec2::new(3.0, 1.0)];
+const SEED_TRIANGLE: [Vec2; 3] = [
+    Vec2::new(0.0, 0.0),
+    Vec2::new(2.0, 3.0),
+    Vec2::new(3.0, 1.0),
+];
 
 fn ratio(n: i64, d: i64) -> Q {
     Q::new(BigInt::from(n), BigInt::from(d))
@@ -33,9 +39,21 @@ fn assert_weights(got: [f32; 3], want: [(i64, i64); 3]) {
 #[test]
 fn seed_example_7() {
     let cases = [
-        (Vec2::new(2.0, 3.0), [(0, 1), (1, 1), (0, 1)], Location::OnVertex(1)),
-        (Vec2::new(2.0 / 3.0, 1.0), [(2, 3), (1, 3), (0, 1)], Location::OnEdge(2)),
-        (Vec2::new(-5.0 / 3.0, 1.0), [(4, 3), (2, 3), (-1, 1)], Location::Outside),
+        (
+            Vec2::new(2.0, 3.0),
+            [(0, 1), (1, 1), (0, 1)],
+            Location::OnVertex(1),
+        ),
+        (
+            Vec2::new(2.0 / 3.0, 1.0),
+            [(2, 3), (1, 3), (0, 1)],
+            Location::OnEdge(2),
+        ),
+        (
+            Vec2::new(-5.0 / 3.0, 1.0),
+            [(4, 3), (2, 3), (-1, 1)],
+            Location::Outside,
+        ),
     ];
     for (p, want, location) in cases {
         // The f32 point is not exactly the rational one; compare with the exact weights of the
@@ -46,7 +64,10 @@ fn seed_example_7() {
             assert_eq!(b.weights, [0.0, 1.0, 0.0]);
         }
         for (g, (n, d)) in b.weights.iter().zip(want) {
-            assert!((f64::from(*g) - n as f64 / d as f64).abs() < 1e-6, "{g} vs {n}/{d}");
+            assert!(
+                (f64::from(*g) - n as f64 / d as f64).abs() < 1e-6,
+                "{g} vs {n}/{d}"
+            );
         }
         if p.x.fract() == 0.0 {
             assert_eq!(b.location, location);
@@ -78,7 +99,11 @@ fn seed_example_9() {
 /// Seed 001: the centroid has (1/3, 1/3, 1/3); a vertex has (1, 0, 0).
 #[test]
 fn centroid_and_vertex() {
-    let tri = [Vec2::new(0.0, 0.0), Vec2::new(3.0, 0.0), Vec2::new(0.0, 3.0)];
+    let tri = [
+        Vec2::new(0.0, 0.0),
+        Vec2::new(3.0, 0.0),
+        Vec2::new(0.0, 3.0),
+    ];
     let b = barycentric_2d(Vec2::new(1.0, 1.0), tri).unwrap();
     assert_weights(b.weights, [(1, 3), (1, 3), (1, 3)]);
     assert_eq!(b.location, Location::Inside);
@@ -181,7 +206,12 @@ fn hard_cases_within_bar() {
         check_barycentric_2d(case.point, case.triangle)
             .unwrap_or_else(|e| panic!("{} ({}): {e}", case.name, case.parameter));
         if let Some(want) = case.expected {
-            assert_eq!(locate_2d(case.point, case.triangle).unwrap(), want, "{}", case.name);
+            assert_eq!(
+                locate_2d(case.point, case.triangle).unwrap(),
+                want,
+                "{}",
+                case.name
+            );
         }
         let exact_w = exact::barycentric_2d(case.point, case.triangle).unwrap();
         let kappa = barycentric_condition(case.point, case.triangle);
@@ -190,23 +220,36 @@ fn hard_cases_within_bar() {
         let _ = barycentric_2d_f64(case.point, case.triangle);
         let w = barycentric_2d_naive_f32(case.point, case.triangle);
         for (wi, e) in w.iter().zip(&exact_w) {
-            let err = if wi.is_finite() { exact::abs_diff(&qf(*wi), e) } else { f64::INFINITY };
+            let err = if wi.is_finite() {
+                exact::abs_diff(&qf(*wi), e)
+            } else {
+                f64::INFINITY
+            };
             if err > barycentric_bar(exact::to_f64(e), kappa) {
                 naive_over_bar += 1;
             }
         }
     }
     println!("naive f32 weights over the bar on the hard-case table: {naive_over_bar}");
-    assert!(naive_over_bar > 0, "the hard-case table no longer challenges the naive formula");
+    assert!(
+        naive_over_bar > 0,
+        "the hard-case table no longer challenges the naive formula"
+    );
 }
 
 #[test]
 fn degenerate_and_non_finite() {
     let line = [Vec2::ZERO, Vec2::ONE, Vec2::splat(2.0)];
-    assert_eq!(barycentric_2d(Vec2::X, line), Err(InterpError::DegenerateTriangle));
+    assert_eq!(
+        barycentric_2d(Vec2::X, line),
+        Err(InterpError::DegenerateTriangle)
+    );
     assert_eq!(locate_2d(Vec2::X, line), Ok(Location::Degenerate));
     let point = [Vec2::ONE; 3];
-    assert_eq!(barycentric_2d(Vec2::ONE, point), Err(InterpError::DegenerateTriangle));
+    assert_eq!(
+        barycentric_2d(Vec2::ONE, point),
+        Err(InterpError::DegenerateTriangle)
+    );
     for v in barytex_interp::hard_cases::NON_FINITE {
         assert_eq!(
             barycentric_2d(Vec2::new(v, 0.0), SEED_TRIANGLE),
@@ -221,7 +264,11 @@ fn degenerate_and_non_finite() {
 
 #[test]
 fn clockwise_triangles_give_the_same_weights() {
-    let ccw = [Vec2::new(0.0, 0.0), Vec2::new(4.0, 1.0), Vec2::new(1.0, 3.0)];
+    let ccw = [
+        Vec2::new(0.0, 0.0),
+        Vec2::new(4.0, 1.0),
+        Vec2::new(1.0, 3.0),
+    ];
     let cw = [ccw[0], ccw[2], ccw[1]];
     let p = Vec2::new(1.5, 1.25);
     let a = barycentric_2d(p, ccw).unwrap();

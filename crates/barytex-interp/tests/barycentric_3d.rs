@@ -31,21 +31,28 @@ fn check(p: Vec3, tri: [Vec3; 3]) -> Result<(), String> {
         let err = exact::abs_diff(&qf(*g), w);
         let bound = ulp_f32(w64) + k * 2f64.powi(-46);
         if err > bound {
-            return Err(format!("{p:?} in {tri:?}: {g} vs {w64}, error {err:e} > {bound:e}"));
+            return Err(format!(
+                "{p:?} in {tri:?}: {g} vs {w64}, error {err:e} > {bound:e}"
+            ));
         }
     }
     Ok(())
 }
 
 fn well_shaped_3d() -> impl Strategy<Value = [Vec3; 3]> {
-    [vec3_in(-100.0, 100.0), vec3_in(-100.0, 100.0), vec3_in(-100.0, 100.0)].prop_filter(
-        "well shaped",
-        |[a, b, c]| {
-            let n = (*b - *a).cross(*c - *a).length();
-            let e = (*b - *a).length_squared().max((*c - *a).length_squared()).max((*c - *b).length_squared());
-            n >= 0.05 * e
-        },
-    )
+    [
+        vec3_in(-100.0, 100.0),
+        vec3_in(-100.0, 100.0),
+        vec3_in(-100.0, 100.0),
+    ]
+    .prop_filter("well shaped", |[a, b, c]| {
+        let n = (*b - *a).cross(*c - *a).length();
+        let e = (*b - *a)
+            .length_squared()
+            .max((*c - *a).length_squared())
+            .max((*c - *b).length_squared());
+        n >= 0.05 * e
+    })
 }
 
 proptest! {
@@ -80,30 +87,52 @@ proptest! {
 fn slivers_3d_within_bar() {
     let mut cramer_worst_at_1e_4 = 0.0f64;
     for case in triangles_3d() {
-        check(case.point, case.triangle).unwrap_or_else(|e| panic!("{} {}: {e}", case.name, case.parameter));
+        check(case.point, case.triangle)
+            .unwrap_or_else(|e| panic!("{} {}: {e}", case.name, case.parameter));
         let want = exact::barycentric_3d(case.point, case.triangle).unwrap();
         let cramer = barycentric_3d_cramer_f32(case.point, case.triangle);
         let err = cramer
             .iter()
             .zip(&want)
-            .map(|(g, w)| if g.is_finite() { exact::abs_diff(&qf(*g), w) } else { f64::INFINITY })
+            .map(|(g, w)| {
+                if g.is_finite() {
+                    exact::abs_diff(&qf(*g), w)
+                } else {
+                    f64::INFINITY
+                }
+            })
             .fold(0.0, f64::max);
-        println!("{} {:e}: Cramer f32 max error {err:e}", case.name, case.parameter);
+        println!(
+            "{} {:e}: Cramer f32 max error {err:e}",
+            case.name, case.parameter
+        );
         if case.name == "tilted sliver" && case.parameter <= 1e-4 {
             cramer_worst_at_1e_4 = cramer_worst_at_1e_4.max(err);
         }
     }
-    assert!(cramer_worst_at_1e_4 > 1e-2, "Cramer form unexpectedly accurate on slivers: {cramer_worst_at_1e_4}");
+    assert!(
+        cramer_worst_at_1e_4 > 1e-2,
+        "Cramer form unexpectedly accurate on slivers: {cramer_worst_at_1e_4}"
+    );
 }
 
 #[test]
 fn degenerate_and_non_finite_3d() {
     let line = [Vec3::ZERO, Vec3::ONE, Vec3::splat(2.0)];
-    assert_eq!(barycentric_3d(Vec3::X, line), Err(InterpError::DegenerateTriangle));
-    assert_eq!(PrecomputedTriangle3::new(line), Err(InterpError::DegenerateTriangle));
+    assert_eq!(
+        barycentric_3d(Vec3::X, line),
+        Err(InterpError::DegenerateTriangle)
+    );
+    assert_eq!(
+        PrecomputedTriangle3::new(line),
+        Err(InterpError::DegenerateTriangle)
+    );
     for v in barytex_interp::hard_cases::NON_FINITE {
         let tri = [Vec3::X, Vec3::Y, Vec3::Z];
-        assert_eq!(barycentric_3d(Vec3::splat(v), tri), Err(InterpError::NonFinite { what: "point" }));
+        assert_eq!(
+            barycentric_3d(Vec3::splat(v), tri),
+            Err(InterpError::NonFinite { what: "point" })
+        );
         assert_eq!(
             barycentric_3d(Vec3::ZERO, [Vec3::X, Vec3::new(0.0, v, 0.0), Vec3::Z]),
             Err(InterpError::NonFinite { what: "triangle" })
@@ -114,7 +143,11 @@ fn degenerate_and_non_finite_3d() {
 
 #[test]
 fn vertices_and_centroid_3d() {
-    let tri = [Vec3::new(1.0, 0.0, 2.0), Vec3::new(-1.0, 3.0, 0.5), Vec3::new(4.0, 1.0, -1.0)];
+    let tri = [
+        Vec3::new(1.0, 0.0, 2.0),
+        Vec3::new(-1.0, 3.0, 0.5),
+        Vec3::new(4.0, 1.0, -1.0),
+    ];
     for (i, v) in tri.iter().enumerate() {
         let w = barycentric_3d(*v, tri).unwrap();
         let mut want = [0.0; 3];

@@ -4,16 +4,27 @@
 #![allow(clippy::unwrap_used, missing_docs)]
 
 use barytex_interp::hard_cases::quads;
-use barytex_interp::{InterpError, InverseBilinear, bilinear, inverse_bilinear_2d, inverse_bilinear_3d};
+use barytex_interp::{
+    InterpError, InverseBilinear, bilinear, inverse_bilinear_2d, inverse_bilinear_3d,
+};
 use barytex_testkit::exact::{self, Q};
 use barytex_testkit::invariants::{check_inverse_bilinear_2d, inverse_bilinear_error};
-use barytex_testkit::reference::{bilinear_f64, inverse_bilinear_newton, quilez_inverse_bilinear_f32};
-use barytex_testkit::strategies::{convex_quad, near_parallelogram_quad, non_planar_quad_3d, vec2_bits, vec2_in};
+use barytex_testkit::reference::{
+    bilinear_f64, inverse_bilinear_newton, quilez_inverse_bilinear_f32,
+};
+use barytex_testkit::strategies::{
+    convex_quad, near_parallelogram_quad, non_planar_quad_3d, vec2_bits, vec2_in,
+};
 use glam::{DVec2, Vec2, Vec3};
 use num_bigint::BigInt;
 use proptest::prelude::*;
 
-const EXAMPLE_10: [Vec2; 4] = [Vec2::new(0.0, 0.0), Vec2::new(4.0, 0.0), Vec2::new(5.0, 3.0), Vec2::new(0.0, 2.0)];
+const EXAMPLE_10: [Vec2; 4] = [
+    Vec2::new(0.0, 0.0),
+    Vec2::new(4.0, 0.0),
+    Vec2::new(5.0, 3.0),
+    Vec2::new(0.0, 2.0),
+];
 
 /// Map `(α, β)` forward in f64 and round to f32: the input point of a round trip.
 fn forward(quad: [Vec2; 4], ab: Vec2) -> Vec2 {
@@ -40,20 +51,39 @@ fn seed_example_10() {
         // Exact forward map of the f32 parameters, against the exact point of the exact ones.
         let p = exact::bilinear_2d(EXAMPLE_10, f64::from(af), f64::from(bf));
         let (xf, yf) = (exact::to_f64(&r(x)), exact::to_f64(&r(y)));
-        assert!((exact::to_f64(&p[0]) - xf).abs() < 1e-6 && (exact::to_f64(&p[1]) - yf).abs() < 1e-6);
+        assert!(
+            (exact::to_f64(&p[0]) - xf).abs() < 1e-6 && (exact::to_f64(&p[1]) - yf).abs() < 1e-6
+        );
         let ours = bilinear(EXAMPLE_10, af, bf);
-        assert!((f64::from(ours.x) - xf).abs() < 1e-6 && (f64::from(ours.y) - yf).abs() < 1e-6, "{ours:?}");
+        assert!(
+            (f64::from(ours.x) - xf).abs() < 1e-6 && (f64::from(ours.y) - yf).abs() < 1e-6,
+            "{ours:?}"
+        );
         // And back.
-        let ab = inverse_bilinear_2d(Vec2::new(xf as f32, yf as f32), EXAMPLE_10).unwrap().inside().unwrap();
-        assert!((ab - Vec2::new(af, bf)).abs().max_element() < 3e-7, "{ab:?} vs ({af}, {bf})");
+        let ab = inverse_bilinear_2d(Vec2::new(xf as f32, yf as f32), EXAMPLE_10)
+            .unwrap()
+            .inside()
+            .unwrap();
+        assert!(
+            (ab - Vec2::new(af, bf)).abs().max_element() < 3e-7,
+            "{ab:?} vs ({af}, {bf})"
+        );
     }
     assert_eq!(bilinear(EXAMPLE_10, 1.0, 0.0), Vec2::new(4.0, 0.0));
-    assert_eq!(bilinear(EXAMPLE_10, 0.5, 0.25), Vec2::new(17.0 / 8.0, 5.0 / 8.0));
+    assert_eq!(
+        bilinear(EXAMPLE_10, 0.5, 0.25),
+        Vec2::new(17.0 / 8.0, 5.0 / 8.0)
+    );
 }
 
 #[test]
 fn corners_are_exact() {
-    let quad = [Vec2::new(0.1, 0.2), Vec2::new(4.3, 0.7), Vec2::new(5.1, 3.3), Vec2::new(0.3, 2.9)];
+    let quad = [
+        Vec2::new(0.1, 0.2),
+        Vec2::new(4.3, 0.7),
+        Vec2::new(5.1, 3.3),
+        Vec2::new(0.3, 2.9),
+    ];
     assert_eq!(bilinear(quad, 0.0, 0.0), quad[0]);
     assert_eq!(bilinear(quad, 1.0, 0.0), quad[1]);
     assert_eq!(bilinear(quad, 1.0, 1.0), quad[2]);
@@ -61,7 +91,10 @@ fn corners_are_exact() {
     for (i, c) in quad.iter().enumerate() {
         let ab = inverse_bilinear_2d(*c, quad).unwrap().inside().unwrap();
         let want = [Vec2::ZERO, Vec2::X, Vec2::ONE, Vec2::Y][i];
-        assert!((ab - want).abs().max_element() <= 1e-7, "corner {i}: {ab:?}");
+        assert!(
+            (ab - want).abs().max_element() <= 1e-7,
+            "corner {i}: {ab:?}"
+        );
     }
 }
 
@@ -180,11 +213,19 @@ proptest! {
 #[test]
 fn non_convex_quad_reports_both_roots() {
     // A "bow-tie": corners x and y swapped relative to a convex quad.
-    let quad = [Vec2::new(0.0, 0.0), Vec2::new(4.0, 4.0), Vec2::new(4.0, 0.0), Vec2::new(0.0, 4.0)];
+    let quad = [
+        Vec2::new(0.0, 0.0),
+        Vec2::new(4.0, 4.0),
+        Vec2::new(4.0, 0.0),
+        Vec2::new(0.0, 4.0),
+    ];
     // Where the two crossing edges meet, every β is a preimage (α = 1/2).
     assert_eq!(
         inverse_bilinear_2d(Vec2::new(2.0, 2.0), quad),
-        Ok(InverseBilinear::Folded(Vec2::new(0.5, 0.0), Vec2::new(0.5, 1.0)))
+        Ok(InverseBilinear::Folded(
+            Vec2::new(0.5, 0.0),
+            Vec2::new(0.5, 1.0)
+        ))
     );
     let mut folded = 0;
     for i in 1..20 {
@@ -197,7 +238,10 @@ fn non_convex_quad_reports_both_roots() {
                 assert_ne!(a, b);
                 for ab in [a, b] {
                     let back = forward(quad, ab);
-                    assert!((back - p).length() < 1e-5, "{ab:?} maps to {back:?}, not {p:?}");
+                    assert!(
+                        (back - p).length() < 1e-5,
+                        "{ab:?} maps to {back:?}, not {p:?}"
+                    );
                 }
             }
         }
@@ -221,31 +265,68 @@ fn hard_case_quads_within_bar() {
         // κ: offset quads lose the point's own rounding, relative to their size.
         let size = (case.quad[2] - case.quad[0]).length();
         let offset_rounding = f64::from(p.abs().max_element()) * 2f64.powi(-24) / f64::from(size);
-        assert!(err <= 3e-7 + 4.0 * offset_rounding, "{} {}: error {err:e}", case.name, case.parameter);
+        assert!(
+            err <= 3e-7 + 4.0 * offset_rounding,
+            "{} {}: error {err:e}",
+            case.name,
+            case.parameter
+        );
         let q = quilez_inverse_bilinear_f32(p, case.quad);
-        let qerr = if q.is_finite() { inverse_bilinear_error(q, reference) } else { f64::INFINITY };
-        println!("{} {:e}: ours {err:e}, Quilez/pbrt port {qerr:e}", case.name, case.parameter);
+        let qerr = if q.is_finite() {
+            inverse_bilinear_error(q, reference)
+        } else {
+            f64::INFINITY
+        };
+        println!(
+            "{} {:e}: ours {err:e}, Quilez/pbrt port {qerr:e}",
+            case.name, case.parameter
+        );
         quilez_worst = quilez_worst.max(qerr);
     }
-    assert!(quilez_worst > 1e-3, "the table no longer shows the threshold's failure");
+    assert!(
+        quilez_worst > 1e-3,
+        "the table no longer shows the threshold's failure"
+    );
 }
 
 #[test]
 fn degenerate_and_non_finite_quads() {
     let line = [Vec2::ZERO, Vec2::ONE, Vec2::splat(2.0), Vec2::splat(3.0)];
-    assert_eq!(inverse_bilinear_2d(Vec2::splat(0.5), line), Err(InterpError::DegenerateQuad));
+    assert_eq!(
+        inverse_bilinear_2d(Vec2::splat(0.5), line),
+        Err(InterpError::DegenerateQuad)
+    );
     let point = [Vec2::ONE; 4];
-    assert_eq!(inverse_bilinear_2d(Vec2::ONE, point), Err(InterpError::DegenerateQuad));
-    assert_eq!(inverse_bilinear_2d(Vec2::new(5.0, 0.0), point), Err(InterpError::DegenerateQuad));
+    assert_eq!(
+        inverse_bilinear_2d(Vec2::ONE, point),
+        Err(InterpError::DegenerateQuad)
+    );
+    assert_eq!(
+        inverse_bilinear_2d(Vec2::new(5.0, 0.0), point),
+        Err(InterpError::DegenerateQuad)
+    );
     // A triangle-shaped quad (y = z): its apex has a whole segment of preimages, β = 0 … 1 at α = 1.
     let tri_quad = [Vec2::ZERO, Vec2::X, Vec2::X, Vec2::Y];
-    assert!(inverse_bilinear_2d(Vec2::new(0.25, 0.25), tri_quad).unwrap().inside().is_some());
+    assert!(
+        inverse_bilinear_2d(Vec2::new(0.25, 0.25), tri_quad)
+            .unwrap()
+            .inside()
+            .is_some()
+    );
     for v in barytex_interp::hard_cases::NON_FINITE {
-        assert_eq!(inverse_bilinear_2d(Vec2::new(v, 0.0), EXAMPLE_10), Err(InterpError::NonFinite { what: "point" }));
+        assert_eq!(
+            inverse_bilinear_2d(Vec2::new(v, 0.0), EXAMPLE_10),
+            Err(InterpError::NonFinite { what: "point" })
+        );
         let mut q = EXAMPLE_10;
         q[2].y = v;
-        assert_eq!(inverse_bilinear_2d(Vec2::ONE, q), Err(InterpError::NonFinite { what: "quad" }));
-        assert!(inverse_bilinear_3d(Vec3::splat(v), [Vec3::X, Vec3::Y, Vec3::Z, Vec3::ONE]).is_err());
+        assert_eq!(
+            inverse_bilinear_2d(Vec2::ONE, q),
+            Err(InterpError::NonFinite { what: "quad" })
+        );
+        assert!(
+            inverse_bilinear_3d(Vec3::splat(v), [Vec3::X, Vec3::Y, Vec3::Z, Vec3::ONE]).is_err()
+        );
     }
     let line3 = [Vec3::ZERO, Vec3::ONE, Vec3::splat(2.0), Vec3::splat(3.0)];
     assert!(inverse_bilinear_3d(Vec3::ONE, line3).is_err());

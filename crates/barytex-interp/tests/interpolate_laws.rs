@@ -40,8 +40,11 @@ from_vec!(Vec3, 3, |c: &[f32]| Vec3::new(c[0], c[1], c[2]));
 from_vec!(Vec3A, 3, |c: &[f32]| Vec3A::new(c[0], c[1], c[2]));
 from_vec!(Vec4, 4, |c: &[f32]| Vec4::new(c[0], c[1], c[2], c[3]));
 from_vec!(DVec2, 2, |c: &[f32]| Vec2::new(c[0], c[1]).as_dvec2() / 3.0);
-from_vec!(DVec3, 3, |c: &[f32]| Vec3::new(c[0], c[1], c[2]).as_dvec3() / 3.0);
-from_vec!(DVec4, 4, |c: &[f32]| Vec4::new(c[0], c[1], c[2], c[3]).as_dvec4() / 3.0);
+from_vec!(DVec3, 3, |c: &[f32]| Vec3::new(c[0], c[1], c[2]).as_dvec3()
+    / 3.0);
+from_vec!(DVec4, 4, |c: &[f32]| Vec4::new(c[0], c[1], c[2], c[3])
+    .as_dvec4()
+    / 3.0);
 from_vec!([f32; 3], 3, |c: &[f32]| [c[0], c[1], c[2]]);
 from_vec!((f32, Vec2), 3, |c: &[f32]| (c[0], Vec2::new(c[1], c[2])));
 from_vec!((Vec3, f64, [Vec2; 2]), 8, |c: &[f32]| (
@@ -49,7 +52,9 @@ from_vec!((Vec3, f64, [Vec2; 2]), 8, |c: &[f32]| (
     f64::from(c[3]),
     [Vec2::new(c[4], c[5]), Vec2::new(c[6], c[7])]
 ));
-from_vec!((f32, f32, f32, f32), 4, |c: &[f32]| (c[0], c[1], c[2], c[3]));
+from_vec!((f32, f32, f32, f32), 4, |c: &[f32]| (
+    c[0], c[1], c[2], c[3]
+));
 
 fn check_laws<T>(name: &str)
 where
@@ -71,10 +76,25 @@ where
             let a = T::from_components(&ca);
             let b = T::from_components(&cb);
             // 1. exact endpoints
-            prop_assert_eq!(a.lerp(b, 0.0).components(), a.components(), "{} endpoint 0", name);
-            prop_assert_eq!(a.lerp(b, 1.0).components(), b.components(), "{} endpoint 1", name);
+            prop_assert_eq!(
+                a.lerp(b, 0.0).components(),
+                a.components(),
+                "{} endpoint 0",
+                name
+            );
+            prop_assert_eq!(
+                a.lerp(b, 1.0).components(),
+                b.components(),
+                "{} endpoint 1",
+                name
+            );
             // 2. consistency
-            prop_assert_eq!(a.lerp(a, t).components(), a.components(), "{} lerp(a, a, t)", name);
+            prop_assert_eq!(
+                a.lerp(a, t).components(),
+                a.components(),
+                "{} lerp(a, a, t)",
+                name
+            );
             // 3. partition of unity, 4. weights summing to zero
             let w = [w0, w1, 1.0 - w0 - w1];
             let wsum: f64 = w.iter().map(|&x| f64::from(x)).sum();
@@ -83,7 +103,13 @@ where
             let one = interpolate3([a, a, a], w).components();
             for (got, want) in one.iter().zip(a.components()) {
                 let bound = 4.0 * eps * wabs * want.abs() + (wsum - 1.0).abs() * want.abs();
-                prop_assert!((got - want).abs() <= bound, "{} partition of unity: {} vs {}", name, got, want);
+                prop_assert!(
+                    (got - want).abs() <= bound,
+                    "{} partition of unity: {} vs {}",
+                    name,
+                    got,
+                    want
+                );
             }
             let dw = [w0, w1, -w0 - w1];
             let dabs: f64 = dw.iter().map(|&x| f64::from(x).abs()).sum();
@@ -98,11 +124,17 @@ where
                 let want_scale = ai * f64::from(w0);
                 let want = ai.mul_add(f64::from(w0), bi * f64::from(w1));
                 let bound = 4.0 * eps * (want_scale.abs() + (bi * f64::from(w1)).abs());
-                prop_assert!((got - want).abs() <= bound.max(1e-300), "{} linearity", name);
+                prop_assert!(
+                    (got - want).abs() <= bound.max(1e-300),
+                    "{} linearity",
+                    name
+                );
             }
             // combine agrees with combine3
             let c3 = T::combine3([a, b, a], w).components();
-            let cn = T::combine([(a, w[0]), (b, w[1]), (a, w[2])]).unwrap().components();
+            let cn = T::combine([(a, w[0]), (b, w[1]), (a, w[2])])
+                .unwrap()
+                .components();
             prop_assert_eq!(c3, cn, "{} combine vs combine3", name);
             Ok(())
         })

@@ -105,7 +105,10 @@ fn extrapolates_along_the_line() {
 fn special_values_never_panic() {
     for v in barytex_interp::hard_cases::NON_FINITE {
         let x = lerp(v, 1.0, 0.5);
-        assert!(x.is_nan() || (v.is_infinite() && x.is_infinite()), "lerp({v}, 1, 0.5) = {x}");
+        assert!(
+            x.is_nan() || (v.is_infinite() && x.is_infinite()),
+            "lerp({v}, 1, 0.5) = {x}"
+        );
         assert!(lerp(1.0, v, 0.5).is_nan() || v.is_infinite());
         assert!(lerp(1.0, 2.0, v).is_nan() || v.is_infinite());
         assert_eq!(inverse_lerp(v, 1.0, 0.5), None);

@@ -30,7 +30,9 @@ fn kettner_grid_has_no_wrong_sign() {
         }
         collinear += usize::from(want == 0);
     }
-    println!("Kettner grid 256²: exact {wrong}, naive f32 {naive_wrong}, dop f32 {dop_wrong} wrong signs; {collinear} collinear");
+    println!(
+        "Kettner grid 256²: exact {wrong}, naive f32 {naive_wrong}, dop f32 {dop_wrong} wrong signs; {collinear} collinear"
+    );
     assert_eq!(wrong, 0);
     // The grid is hard: the textbook predicate must fail on it, or the test proves nothing.
     assert!(naive_wrong > 1000, "naive f32 got only {naive_wrong} wrong");
@@ -66,16 +68,36 @@ proptest! {
 #[test]
 fn extreme_magnitudes_are_exact() {
     let cases = [
-        (Vec2::new(f32::MAX, f32::MAX), Vec2::new(-f32::MAX, -f32::MAX), Vec2::ZERO),
-        (Vec2::new(f32::MAX, 0.0), Vec2::new(-f32::MAX, f32::from_bits(1)), Vec2::ZERO),
-        (Vec2::ZERO, Vec2::new(f32::from_bits(1), 0.0), Vec2::new(0.0, f32::from_bits(1))),
-        (Vec2::new(1e-45, 1e-45), Vec2::new(3e38, 3e38), Vec2::new(-3e38, -3e38)),
+        (
+            Vec2::new(f32::MAX, f32::MAX),
+            Vec2::new(-f32::MAX, -f32::MAX),
+            Vec2::ZERO,
+        ),
+        (
+            Vec2::new(f32::MAX, 0.0),
+            Vec2::new(-f32::MAX, f32::from_bits(1)),
+            Vec2::ZERO,
+        ),
+        (
+            Vec2::ZERO,
+            Vec2::new(f32::from_bits(1), 0.0),
+            Vec2::new(0.0, f32::from_bits(1)),
+        ),
+        (
+            Vec2::new(1e-45, 1e-45),
+            Vec2::new(3e38, 3e38),
+            Vec2::new(-3e38, -3e38),
+        ),
     ];
     for (a, b, c) in cases {
         check_orient2d(a, b, c).unwrap();
     }
     assert_eq!(
-        orient2d(Vec2::ZERO, Vec2::new(f32::from_bits(1), 0.0), Vec2::new(0.0, f32::from_bits(1))),
+        orient2d(
+            Vec2::ZERO,
+            Vec2::new(f32::from_bits(1), 0.0),
+            Vec2::new(0.0, f32::from_bits(1))
+        ),
         Some(Orientation::CounterClockwise)
     );
 }

@@ -8,7 +8,13 @@ use proptest::prelude::*;
 /// `f(x, y, z) = c₀ + c₁x + c₂y + c₃z + c₄xy + c₅xz + c₆yz + c₇xyz`.
 fn trilinear_function(c: [f64; 8], t: [f64; 3]) -> f64 {
     let [x, y, z] = t;
-    c[0] + c[1] * x + c[2] * y + c[3] * z + c[4] * x * y + c[5] * x * z + c[6] * y * z + c[7] * x * y * z
+    c[0] + c[1] * x
+        + c[2] * y
+        + c[3] * z
+        + c[4] * x * y
+        + c[5] * x * z
+        + c[6] * y * z
+        + c[7] * x * y * z
 }
 
 proptest! {
@@ -43,7 +49,8 @@ proptest! {
 
 #[test]
 fn corners_reproduced_exactly() {
-    let corners: [Vec4; 8] = core::array::from_fn(|i| Vec4::new(i as f32 * 0.1, 1.0 / (i as f32 + 1.0), -3.7, i as f32));
+    let corners: [Vec4; 8] =
+        core::array::from_fn(|i| Vec4::new(i as f32 * 0.1, 1.0 / (i as f32 + 1.0), -3.7, i as f32));
     for (n, c) in corners.iter().enumerate() {
         let t = Vec3::new((n & 1) as f32, ((n >> 1) & 1) as f32, ((n >> 2) & 1) as f32);
         assert_eq!(trilinear(corners, t), *c);

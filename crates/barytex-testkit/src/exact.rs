@@ -155,7 +155,11 @@ pub fn bilinear_2d(quad: [Vec2; 4], alpha: f64, beta: f64) -> [Q; 2] {
 /// Exact perspective-correct weights `(αᵢ/wᵢ)/Σ(αⱼ/wⱼ)`; `None` when the sum is zero.
 #[must_use]
 pub fn perspective_weights(screen: &[f32], w: &[f32]) -> Option<Vec<Q>> {
-    let q: Vec<Q> = screen.iter().zip(w).map(|(&a, &wi)| qf(a) / qf(wi)).collect();
+    let q: Vec<Q> = screen
+        .iter()
+        .zip(w)
+        .map(|(&a, &wi)| qf(a) / qf(wi))
+        .collect();
     let sum: Q = q.iter().cloned().sum();
     if sum.is_zero() {
         return None;
@@ -165,6 +169,7 @@ pub fn perspective_weights(screen: &[f32], w: &[f32]) -> Option<Vec<Q>> {
 
 #[cfg(test)]
 mod tests {
+    #![allow(clippy::unwrap_used)]
     use super::*;
 
     #[test]

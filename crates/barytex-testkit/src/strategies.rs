@@ -64,8 +64,12 @@ pub fn shape_quality(tri: [Vec2; 3]) -> f64 {
 
 /// A well-shaped triangle in `[-100, 100]²` (quality ≥ 0.05), either orientation.
 pub fn triangle_2d() -> impl Strategy<Value = [Vec2; 3]> + Clone {
-    [vec2_in(-100.0, 100.0), vec2_in(-100.0, 100.0), vec2_in(-100.0, 100.0)]
-        .prop_filter("well shaped", |t| shape_quality(*t) >= 0.05)
+    [
+        vec2_in(-100.0, 100.0),
+        vec2_in(-100.0, 100.0),
+        vec2_in(-100.0, 100.0),
+    ]
+    .prop_filter("well shaped", |t| shape_quality(*t) >= 0.05)
 }
 
 /// A triangle at a given scale and offset: `triangle_2d() · scale + offset`.
@@ -100,20 +104,23 @@ pub fn convex_quad() -> impl Strategy<Value = [Vec2; 4]> + Clone {
         0.3f32..3.0,
         vec2_in(-5.0, 5.0),
     )
-        .prop_filter_map("angles span less than 2π", |(gaps, start, radii, sx, sy, c)| {
-            let total: f32 = gaps[..3].iter().sum();
-            if total + 0.35 >= core::f32::consts::TAU {
-                return None;
-            }
-            let mut angle = start;
-            let mut quad = [Vec2::ZERO; 4];
-            for i in 0..4 {
-                let r = radii[i];
-                quad[i] = c + Vec2::new(sx * r * angle.cos(), sy * r * angle.sin());
-                angle += gaps[i];
-            }
-            is_strictly_convex_ccw(quad).then_some(quad)
-        })
+        .prop_filter_map(
+            "angles span less than 2π",
+            |(gaps, start, radii, sx, sy, c)| {
+                let total: f32 = gaps[..3].iter().sum();
+                if total + 0.35 >= core::f32::consts::TAU {
+                    return None;
+                }
+                let mut angle = start;
+                let mut quad = [Vec2::ZERO; 4];
+                for i in 0..4 {
+                    let r = radii[i];
+                    quad[i] = c + Vec2::new(sx * r * angle.cos(), sy * r * angle.sin());
+                    angle += gaps[i];
+                }
+                is_strictly_convex_ccw(quad).then_some(quad)
+            },
+        )
 }
 
 /// Whether the quad turns left at every corner, exactly (f64 cross products of f32 inputs are
@@ -131,7 +138,12 @@ pub fn is_strictly_convex_ccw(q: [Vec2; 4]) -> bool {
 /// A parallelogram, or one corner moved by a few ulps from it: the case where thresholded
 /// solvers switch branches.
 pub fn near_parallelogram_quad() -> impl Strategy<Value = [Vec2; 4]> + Clone {
-    (vec2_in(-10.0, 10.0), vec2_in(0.5, 5.0), vec2_in(-2.0, 2.0), -4i32..=4)
+    (
+        vec2_in(-10.0, 10.0),
+        vec2_in(0.5, 5.0),
+        vec2_in(-2.0, 2.0),
+        -4i32..=4,
+    )
         .prop_filter_map("convex", |(x, e, f, k)| {
             let f = Vec2::new(f.x, f.y.abs() + 0.5);
             let y = x + e;
@@ -144,13 +156,18 @@ pub fn near_parallelogram_quad() -> impl Strategy<Value = [Vec2; 4]> + Clone {
 
 /// Four non-coplanar points in `[-10, 10]³` (the seed's Corollary 12 case).
 pub fn non_planar_quad_3d() -> impl Strategy<Value = [Vec3; 4]> + Clone {
-    [vec3_in(-10.0, 10.0), vec3_in(-10.0, 10.0), vec3_in(-10.0, 10.0), vec3_in(-10.0, 10.0)]
-        .prop_filter("clearly non-planar", |q| {
-            let [x, y, z, w] = q.map(|v| v.as_dvec3());
-            let volume = (y - x).cross(z - x).dot(w - x).abs();
-            let scale = (y - x).length().max((z - x).length()).max((w - x).length());
-            volume > 0.05 * scale * scale * scale
-        })
+    [
+        vec3_in(-10.0, 10.0),
+        vec3_in(-10.0, 10.0),
+        vec3_in(-10.0, 10.0),
+        vec3_in(-10.0, 10.0),
+    ]
+    .prop_filter("clearly non-planar", |q| {
+        let [x, y, z, w] = q.map(|v| v.as_dvec3());
+        let volume = (y - x).cross(z - x).dot(w - x).abs();
+        let scale = (y - x).length().max((z - x).length()).max((w - x).length());
+        volume > 0.05 * scale * scale * scale
+    })
 }
 
 /// Affine weights: three finite values that sum to 1 exactly in f64 for the first two and close
@@ -162,7 +179,11 @@ pub fn affine_weights3() -> impl Strategy<Value = [f32; 3]> + Clone {
 /// Convex weights: three non-negative values that sum to 1 (up to one rounding).
 pub fn convex_weights3() -> impl Strategy<Value = [f32; 3]> + Clone {
     (0.0f32..1.0, 0.0f32..1.0).prop_map(|(a, b)| {
-        let (a, b) = if a + b > 1.0 { (1.0 - a, 1.0 - b) } else { (a, b) };
+        let (a, b) = if a + b > 1.0 {
+            (1.0 - a, 1.0 - b)
+        } else {
+            (a, b)
+        };
         [a, b, (1.0 - a - b).max(0.0)]
     })
 }

@@ -25,7 +25,11 @@ pub fn ulps_between_f32(a: f32, b: f32) -> u64 {
     }
     let key = |x: f32| {
         let bits = x.to_bits() as i64;
-        if bits < 0x8000_0000 { bits } else { 0x8000_0000 - bits }
+        if bits < 0x8000_0000 {
+            bits
+        } else {
+            0x8000_0000 - bits
+        }
     };
     key(a).abs_diff(key(b))
 }
@@ -44,7 +48,10 @@ mod tests {
     #[test]
     fn ulps_between_counts_across_zero() {
         assert_eq!(ulps_between_f32(1.0, 1.0), 0);
-        assert_eq!(ulps_between_f32(1.0, f32::from_bits(1.0f32.to_bits() + 3)), 3);
+        assert_eq!(
+            ulps_between_f32(1.0, f32::from_bits(1.0f32.to_bits() + 3)),
+            3
+        );
         assert_eq!(ulps_between_f32(-0.0, 0.0), 0);
         assert_eq!(ulps_between_f32(f32::from_bits(1), -f32::from_bits(1)), 2);
     }
