@@ -3,7 +3,7 @@
 //! - [`strategies`]: proptest strategies for floats (bounded and raw bit patterns), triangles and
 //!   quads (well-shaped and near-degenerate), and near-equal perturbations.
 //! - [`exact`]: exact-rational reference implementations (every finite float is a rational).
-//! - [`reference`]: f64 reference implementations where exact ones are impractical.
+//! - [`reference`](mod@reference): f64 reference implementations where exact ones are impractical.
 //! - [`invariants`]: checks that return `Err(description)` instead of panicking, so property
 //!   tests and fuzz targets assert exactly the same things.
 //! - [`ulp`]: distances in units in the last place.
