@@ -167,29 +167,27 @@ fn solve(u: DVec2, [x, y, z, w]: [DVec2; 4]) -> Result<InverseBilinear, InterpEr
         .iter()
         .map(|corner| (*corner - x).abs().max_element())
         .fold(0.0, f64::max);
-    if a == 0.0 && b == 0.0 {
+    let mut roots = if a == 0.0 && b == 0.0 {
         if c != 0.0 {
             return Ok(InverseBilinear::Outside(None));
         }
         // Every β solves the equation: either the quad is flat (all corners on one line) or `u`
-        // is the point where a self-intersecting quad's rulings all cross.
+        // is the point where all rulings of a self-intersecting quad cross; then the rulings at
+        // β = 0 and β = 1 stand for the whole family.
         let flat = (y - x).perp_dot(z - x) == 0.0 && (z - x).perp_dot(w - x) == 0.0;
-        let ends = [0.0, 1.0].map(|beta| DVec2::new(alpha_for(u, quad, beta), beta));
-        if flat || ends.iter().any(|ab| !maps_to(quad, *ab, u, size)) {
+        if flat {
             return Err(InterpError::DegenerateQuad);
         }
-        return Ok(InverseBilinear::Folded(
-            ends[0].as_vec2(),
-            ends[1].as_vec2(),
-        ));
-    }
-    let disc = b * b - 4.0 * a * c;
-    if disc < 0.0 || !disc.is_finite() {
-        return Ok(InverseBilinear::Outside(None));
-    }
-    let sign_b = if b < 0.0 { -1.0 } else { 1.0 };
-    let q = -0.5 * (b + sign_b * crate::math::sqrt(disc));
-    let mut roots = [q / a, c / q];
+        [0.0, 1.0]
+    } else {
+        let disc = b * b - 4.0 * a * c;
+        if disc < 0.0 || !disc.is_finite() {
+            return Ok(InverseBilinear::Outside(None));
+        }
+        let sign_b = if b < 0.0 { -1.0 } else { 1.0 };
+        let q = -0.5 * (b + sign_b * crate::math::sqrt(disc));
+        [q / a, c / q]
+    };
     if roots[1] < roots[0] {
         roots.swap(0, 1);
     }
@@ -215,8 +213,11 @@ fn solve(u: DVec2, [x, y, z, w]: [DVec2; 4]) -> Result<InverseBilinear, InterpEr
     }
     let f32_pair = |v: DVec2| v.as_vec2();
     Ok(match inside {
-        [Some(first), Some(second)] => InverseBilinear::Folded(f32_pair(first), f32_pair(second)),
-        [Some(only), None] | [None, Some(only)] => InverseBilinear::Inside(f32_pair(only)),
+        [Some(first), Some(second)] if f32_pair(first) != f32_pair(second) => {
+            InverseBilinear::Folded(f32_pair(first), f32_pair(second))
+        }
+        [Some(only), _] => InverseBilinear::Inside(f32_pair(only)),
+        [None, Some(only)] => InverseBilinear::Inside(f32_pair(only)),
         [None, None] => InverseBilinear::Outside(nearest.map(|(_, ab)| f32_pair(ab))),
     })
 }
