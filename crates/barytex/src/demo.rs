@@ -1,0 +1,284 @@
+//! What `barytex` with no arguments prints until the renderer exists: the seed's worked examples
+//! run through `barytex-interp`, each checked against exact rational arithmetic, and a summary
+//! of Kettner's orientation grid. Every number is computed at run time.
+
+use std::io::Write;
+
+use barytex_interp::hard_cases::kettner_grid;
+use barytex_interp::methods::{orient2d_dop_f32, orient2d_naive_f32};
+use barytex_interp::{InverseBilinear, barycentric_2d, bilinear, inverse_bilinear_2d, orient2d};
+use barytex_testkit::exact::{self, Q};
+use barytex_testkit::invariants::inverse_bilinear_error;
+use barytex_testkit::reference::inverse_bilinear_newton;
+use barytex_testkit::ulp::ulp_f32;
+use glam::{DVec2, Vec2};
+
+type Result = std::result::Result<(), Box<dyn std::error::Error>>;
+
+/// A rational `n/d` from small integers (exact: they are f32 integers).
+fn rat(n: i32, d: i32) -> Q {
+    exact::qf(n as f32) / exact::qf(d as f32)
+}
+
+/// The f32 nearest a rational (through f64; the examples' values have no double-rounding ties).
+fn to_f32(x: &Q) -> f32 {
+    exact::to_f64(x) as f32
+}
+
+/// `(b − a) × (c − a)` in rationals.
+fn cross(a: &[Q; 2], b: &[Q; 2], c: &[Q; 2]) -> Q {
+    (&b[0] - &a[0]) * (&c[1] - &a[1]) - (&b[1] - &a[1]) * (&c[0] - &a[0])
+}
+
+fn show_q2(p: &[Q; 2]) -> String {
+    format!("({}, {})", p[0], p[1])
+}
+
+fn show_q3(w: &[Q; 3]) -> String {
+    format!("({}, {}, {})", w[0], w[1], w[2])
+}
+
+fn show_f32s(values: &[f32]) -> String {
+    let parts: Vec<String> = values.iter().map(|v| format!("{v}")).collect();
+    format!("({})", parts.join(", "))
+}
+
+fn show_err(e: f64) -> String {
+    if e == 0.0 {
+        "0".to_owned()
+    } else {
+        format!("{e:.1e}")
+    }
+}
+
+/// Print the demo to stdout.
+///
+/// # Errors
+/// When stdout cannot be written.
+pub(crate) fn run() -> Result {
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    writeln!(
+        out,
+        "barytex {} — interpolation math, exact where a sign decides topology.",
+        env!("CARGO_PKG_VERSION")
+    )?;
+    writeln!(
+        out,
+        "The renderer does not exist yet; this demo runs the seed's worked examples through \
+         barytex-interp\nand checks every result against exact rational arithmetic \
+         (barytex_testkit::exact), computed now.\n"
+    )?;
+    barycentric_examples(&mut out)?;
+    bilinear_examples(&mut out)?;
+    kettner_summary(&mut out)?;
+    writeln!(
+        out,
+        "Full speed-vs-error report: docs/report/README.md and docs/report/interp.md.\n\
+         Produce it with `barytex report` (from the repository root: \
+         `cargo run --release -- report`; add `--quick` for a fast, rough run)."
+    )?;
+    Ok(())
+}
+
+fn barycentric_examples(out: &mut impl Write) -> Result {
+    let tri_q = [
+        [rat(0, 1), rat(0, 1)],
+        [rat(2, 1), rat(3, 1)],
+        [rat(3, 1), rat(1, 1)],
+    ];
+    let tri = tri_q
+        .clone()
+        .map(|[x, y]| Vec2::new(to_f32(&x), to_f32(&y)));
+    let points = [(2, 1, 3, 1), (11, 3, 2, 1), (3, 2, 3, 2), (1, 1, 0, 1)];
+    writeln!(
+        out,
+        "Seed 000, Examples 7 and 9: barycentric coordinates (α, β, γ) in the triangle \
+         x = (0, 0), y = (2, 3), z = (3, 1)"
+    )?;
+    writeln!(
+        out,
+        "with barytex_interp::barycentric_2d. The point is rounded to f32 first (11/3 is not an \
+         f32), so the error is measured\nagainst the exact weights of the f32 point, and, \
+         separately, against the seed's answer for the ideal point."
+    )?;
+    let h = [
+        "point",
+        "seed's answer",
+        "barycentric_2d (f32)",
+        "location",
+        "error",
+        "ulps",
+        "vs seed",
+    ];
+    writeln!(
+        out,
+        "  {:<11} {:<18} {:<38} {:<14} {:<9} {:<9} {}",
+        h[0], h[1], h[2], h[3], h[4], h[5], h[6]
+    )?;
+    let total = cross(&tri_q[0], &tri_q[1], &tri_q[2]);
+    for (xn, xd, yn, yd) in points {
+        let ideal = [rat(xn, xd), rat(yn, yd)];
+        let seed_weights = [
+            cross(&tri_q[1], &tri_q[2], &ideal) / &total,
+            cross(&tri_q[2], &tri_q[0], &ideal) / &total,
+            cross(&tri_q[0], &tri_q[1], &ideal) / &total,
+        ];
+        let p = Vec2::new(to_f32(&ideal[0]), to_f32(&ideal[1]));
+        let b = barycentric_2d(p, tri)?;
+        let exact_w = exact::barycentric_2d(p, tri).ok_or("degenerate example triangle")?;
+        let (mut err, mut ulps, mut vs_seed) = (0.0f64, 0.0f64, 0.0f64);
+        for ((&w, e), s) in b.weights.iter().zip(&exact_w).zip(&seed_weights) {
+            let d = exact::abs_diff(&exact::qf(w), e);
+            err = err.max(d);
+            ulps = ulps.max(d / ulp_f32(exact::to_f64(e)));
+            vs_seed = vs_seed.max(exact::abs_diff(&exact::qf(w), s));
+        }
+        let exact_location = exact::location_2d(p, tri);
+        let location = if exact_location == b.location {
+            format!("{:?}", b.location)
+        } else {
+            format!("{:?} ✗ exact: {exact_location:?}", b.location)
+        };
+        writeln!(
+            out,
+            "  {:<11} {:<18} {:<38} {:<14} {:<9} {:<9} {}",
+            show_q2(&ideal),
+            show_q3(&seed_weights),
+            show_f32s(&b.weights),
+            location,
+            show_err(err),
+            format!("{ulps:.2}"),
+            show_err(vs_seed)
+        )?;
+    }
+    writeln!(out)?;
+    Ok(())
+}
+
+fn bilinear_examples(out: &mut impl Write) -> Result {
+    let corners = [(0, 0), (4, 0), (5, 3), (0, 2)];
+    let quad_q = corners.map(|(x, y)| [rat(x, 1), rat(y, 1)]);
+    let quad = corners.map(|(x, y)| Vec2::new(x as f32, y as f32));
+    let params = [(1, 1, 0, 1), (1, 3, 1, 1), (1, 2, 1, 4), (2, 3, 1, 3)];
+    writeln!(
+        out,
+        "Seed 000, Example 10: the quad x = (0, 0), y = (4, 0), z = (5, 3), w = (0, 2); (α, β) \
+         mapped forward with\nbarytex_interp::bilinear (error against the exact map of the f32 \
+         parameters) and back with inverse_bilinear_2d\n(error against the seed's (α, β) and \
+         against Newton's method in f64 on the f32 point)."
+    )?;
+    let h = [
+        "(α, β)",
+        "bilinear (f32)",
+        "seed's point",
+        "error",
+        "inverse_bilinear_2d",
+        "vs (α, β)",
+        "vs Newton",
+    ];
+    writeln!(
+        out,
+        "  {:<10} {:<22} {:<13} {:<9} {:<34} {:<9} {}",
+        h[0], h[1], h[2], h[3], h[4], h[5], h[6]
+    )?;
+    let one = rat(1, 1);
+    for (an, ad, bn, bd) in params {
+        let (alpha, beta) = (rat(an, ad), rat(bn, bd));
+        let weights = [
+            (&one - &alpha) * (&one - &beta),
+            &alpha * (&one - &beta),
+            &alpha * &beta,
+            (&one - &alpha) * &beta,
+        ];
+        let seed_point: [Q; 2] = std::array::from_fn(|i| {
+            weights
+                .iter()
+                .zip(&quad_q)
+                .map(|(w, c)| w * &c[i])
+                .fold(rat(0, 1), |acc, term| acc + term)
+        });
+        let (a32, b32) = (to_f32(&alpha), to_f32(&beta));
+        let p = bilinear(quad, a32, b32);
+        let exact_p = exact::bilinear_2d(quad, f64::from(a32), f64::from(b32));
+        let forward_err = exact::abs_diff(&exact::qf(p.x), &exact_p[0])
+            .max(exact::abs_diff(&exact::qf(p.y), &exact_p[1]));
+        let (kind, ab) = match inverse_bilinear_2d(p, quad)? {
+            InverseBilinear::Inside(ab) => ("Inside", Some(ab)),
+            InverseBilinear::Folded(ab, _) => ("Folded", Some(ab)),
+            InverseBilinear::Outside(ab) => ("Outside", ab),
+        };
+        let newton = inverse_bilinear_newton(
+            p.as_dvec2(),
+            quad.map(Vec2::as_dvec2),
+            DVec2::new(f64::from(a32), f64::from(b32)),
+        );
+        let (inverse, vs_seed, vs_newton) = match ab {
+            Some(ab) => (
+                format!("{kind} {}", show_f32s(&[ab.x, ab.y])),
+                show_err(
+                    exact::abs_diff(&exact::qf(ab.x), &alpha)
+                        .max(exact::abs_diff(&exact::qf(ab.y), &beta)),
+                ),
+                newton.map_or_else(
+                    || "–".to_owned(),
+                    |r| show_err(inverse_bilinear_error(ab, r)),
+                ),
+            ),
+            None => (kind.to_owned(), "–".to_owned(), "–".to_owned()),
+        };
+        writeln!(
+            out,
+            "  {:<10} {:<22} {:<13} {:<9} {:<34} {:<9} {}",
+            format!("({alpha}, {beta})"),
+            show_f32s(&[p.x, p.y]),
+            show_q2(&seed_point),
+            show_err(forward_err),
+            inverse,
+            vs_seed,
+            vs_newton
+        )?;
+    }
+    writeln!(out)?;
+    Ok(())
+}
+
+fn kettner_summary(out: &mut impl Write) -> Result {
+    let n = 256;
+    let (mut naive, mut dop, mut ours, mut collinear) = (0, 0, 0, 0);
+    let (mut naive_b, mut dop_b) = (0, 0);
+    for (p, a, b) in kettner_grid(n) {
+        let want = exact::orient2d_sign(p, a, b);
+        collinear += usize::from(want == 0);
+        naive += usize::from(orient2d_naive_f32(p, a, b).sign() != want);
+        dop += usize::from(orient2d_dop_f32(p, a, b).sign() != want);
+        ours += usize::from(orient2d(p, a, b).map(barytex_interp::Orientation::sign) != Some(want));
+        // The same sign with the differences taken from b (cyclic rotation).
+        naive_b += usize::from(orient2d_naive_f32(b, p, a).sign() != want);
+        dop_b += usize::from(orient2d_dop_f32(b, p, a).sign() != want);
+    }
+    let total = n * n;
+    writeln!(
+        out,
+        "Kettner's grid: the {total} points (0.5 + i·ulp, 0.5 + j·ulp), i, j < {n}, against the \
+         line (12, 12)–(24, 24)\n({collinear} exactly collinear); orientation signs that differ \
+         from the exact rational sign:"
+    )?;
+    for (name, wrong) in [
+        ("naive f32 determinant (methods::orient2d_naive_f32)", naive),
+        ("difference of products (methods::orient2d_dop_f32)", dop),
+        ("barytex_interp::orient2d", ours),
+    ] {
+        writeln!(
+            out,
+            "  {name:<54} {wrong:>6} wrong ({:.2} %)",
+            100.0 * wrong as f64 / f64::from(total)
+        )?;
+    }
+    writeln!(
+        out,
+        "  (evaluated as orient(p, a, b), differences from p; taken from b = (24, 24) instead, \
+         naive gets {naive_b} and dop {dop_b} wrong)\n"
+    )?;
+    Ok(())
+}
