@@ -45,6 +45,7 @@ pub struct Barycentric {
 }
 
 /// The signed sub-areas `[d_a, d_b, d_c]` and the total `d`, each with an exact sign.
+#[inline]
 fn signed_areas(p: Vec2, [a, b, c]: [Vec2; 3]) -> Option<([f64; 3], f64)> {
     let total = orient2d_value(a, b, c)?;
     let da = orient2d_value(b, c, p)?;
@@ -53,6 +54,7 @@ fn signed_areas(p: Vec2, [a, b, c]: [Vec2; 3]) -> Option<([f64; 3], f64)> {
     Some(([da, db, dc], total))
 }
 
+#[inline]
 fn classify(sub: [f64; 3], total: f64) -> Location {
     if total == 0.0 {
         return Location::Degenerate;
@@ -87,6 +89,7 @@ fn classify(sub: [f64; 3], total: f64) -> Location {
 /// assert_eq!(locate_2d(Vec2::new(3.0, 3.0), tri)?, Location::Outside);
 /// # Ok::<(), barytex_interp::InterpError>(())
 /// ```
+#[inline]
 pub fn locate_2d(p: Vec2, tri: [Vec2; 3]) -> Result<Location, InterpError> {
     let (sub, total) = signed_areas(p, tri).ok_or(non_finite(p))?;
     Ok(classify(sub, total))
@@ -121,6 +124,7 @@ pub fn locate_2d(p: Vec2, tri: [Vec2; 3]) -> Result<Location, InterpError> {
 /// assert!((a - 5.0 / 7.0).abs() < 1e-7 && (be + 1.0 / 7.0).abs() < 1e-7 && (c - 3.0 / 7.0).abs() < 1e-7);
 /// # Ok::<(), barytex_interp::InterpError>(())
 /// ```
+#[inline]
 pub fn barycentric_2d(p: Vec2, tri: [Vec2; 3]) -> Result<Barycentric, InterpError> {
     let (sub, total) = signed_areas(p, tri).ok_or(non_finite(p))?;
     let location = classify(sub, total);
@@ -128,7 +132,8 @@ pub fn barycentric_2d(p: Vec2, tri: [Vec2; 3]) -> Result<Barycentric, InterpErro
         return Err(InterpError::DegenerateTriangle);
     }
     Ok(Barycentric {
-        weights: sub.map(|d| (d / total) as f32),
+        // `0.0 / negative` would be `-0.0`: zero weights are written as `+0.0`.
+        weights: sub.map(|d| if d == 0.0 { 0.0 } else { (d / total) as f32 }),
         location,
     })
 }

@@ -17,16 +17,33 @@ const CCW_ERRBOUND_A: f64 = (3.0 + 16.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2
 /// The fast path is taken only when its relative error is below 2⁻³⁰, far below an f32 ulp.
 const FAST_PATH_FACTOR: f64 = (1u64 << 30) as f64 * CCW_ERRBOUND_A;
 
-/// `(b − a) × (c − a)` for finite f32 points: the sign is exact and the value is within
+/// `(b − a) × (c − a)` for f32 points (NaN or infinite when an input is): the sign is exact and the value is within
 /// `2⁻³⁰` relative of the exact determinant (exactly 0 when the points are collinear).
+#[inline]
 pub(crate) fn orient2d_det(a: Vec2, b: Vec2, c: Vec2) -> f64 {
+    det_with_filter(a, b, c, FAST_PATH_FACTOR)
+}
+
+/// `(b − a) × (c − a)` for finite f32 points with an exact sign; the value may be inaccurate
+/// when the sign alone was certain. The filter is Shewchuk's plain bound, so near-collinear
+/// points reach the exact sum only when even the sign is in doubt.
+#[inline]
+pub(crate) fn orient2d_sign_det(a: Vec2, b: Vec2, c: Vec2) -> f64 {
+    det_with_filter(a, b, c, CCW_ERRBOUND_A)
+}
+
+#[inline]
+fn det_with_filter(a: Vec2, b: Vec2, c: Vec2, filter: f64) -> f64 {
     let (ax, ay) = (f64::from(a.x), f64::from(a.y));
     let (bx, by) = (f64::from(b.x), f64::from(b.y));
     let (cx, cy) = (f64::from(c.x), f64::from(c.y));
     let left = (bx - ax) * (cy - ay);
     let right = (by - ay) * (cx - ax);
     let det = left - right;
-    if det.abs() > FAST_PATH_FACTOR * (left.abs() + right.abs()) {
+    // A non-finite input always makes `det` NaN or infinite (every coordinate meets an infinite
+    // difference in some product), and finite f32 inputs never do: callers test `det` instead of
+    // the six inputs.
+    if det.abs() > filter * (left.abs() + right.abs()) || !det.is_finite() {
         return det;
     }
     exact_det(ax, ay, bx, by, cx, cy)

@@ -42,8 +42,9 @@ exact_lerp!(
     /// - bounded: for `t` in `[0, 1]` the result lies between `a` and `b`.
     ///
     /// `t` outside `[0, 1]` extrapolates along the same line (the seed's α < 0 and α > 1), still
-    /// monotonic. Built as C++20's `std::lerp` (P0811); glam's `a + (b − a)·t` is not exact at
-    /// `t = 1` and, in some versions, not consistent (glam #823).
+    /// monotonic. Built as C++20's `std::lerp` (P0811). glam 0.34 offers `lerp`, `a(1 − t) + bt`,
+    /// exact at both ends but neither consistent nor monotonic, and `lerp_monotonic`,
+    /// `a + (b − a)t`, which is not exact at `t = 1` (glam #823 is the history).
     ///
     /// # Accuracy
     /// For finite inputs and `t` in `[0, 1]`: `|lerp(a, b, t) − exact| ≤ 2·ε·max(|a|, |b|)` with

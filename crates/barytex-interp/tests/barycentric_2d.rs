@@ -62,6 +62,12 @@ fn seed_example_7() {
         check_barycentric_2d(p, SEED_TRIANGLE).unwrap();
         if p == Vec2::new(2.0, 3.0) {
             assert_eq!(b.weights, [0.0, 1.0, 0.0]);
+            // The seed's triangle is clockwise: zero weights must still be +0.0, not -0.0.
+            assert!(
+                b.weights.iter().all(|w| w.is_sign_positive()),
+                "{:?}",
+                b.weights
+            );
         }
         for (g, (n, d)) in b.weights.iter().zip(want) {
             assert!(
