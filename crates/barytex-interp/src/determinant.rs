@@ -53,22 +53,97 @@ fn det_with_filter(a: Vec2, b: Vec2, c: Vec2, filter: f64) -> f64 {
 /// cx·by`, summed exactly as a floating-point expansion, then rounded.
 #[cold]
 fn exact_det(ax: f64, ay: f64, bx: f64, by: f64, cx: f64, cy: f64) -> f64 {
-    let products = [
+    exact_sum(&[
         ax * by,
         -(ax * cy),
         bx * cy,
         -(bx * ay),
         cx * ay,
         -(cx * by),
-    ];
-    let mut expansion = [0.0f64; 6];
+    ])
+}
+
+/// The exact sum of at most [`MAX_TERMS`] f64 values (each product of two f32 values is one),
+/// rounded within one ulp.
+fn exact_sum(terms: &[f64]) -> f64 {
+    let mut expansion = [0.0f64; MAX_TERMS];
     let mut len = 0;
-    for p in products {
-        len = grow_expansion(&mut expansion, len, p);
+    for &t in terms.iter().take(MAX_TERMS) {
+        len = grow_expansion(&mut expansion, len, t);
     }
     // Components are non-overlapping and in increasing magnitude: summing from the smallest
     // gives the exact sum rounded within one ulp.
     expansion[..len].iter().fold(0.0, |acc, &x| acc + x)
+}
+
+/// The most terms [`exact_sum`] adds: the 16 products of the inverse-bilinear coefficient `B`.
+const MAX_TERMS: usize = 16;
+
+/// `(p − q) × (r − s)` for f32 points, within 2⁻³⁰ relative of the exact value (exact sign): the
+/// coefficients of the inverse-bilinear quadratic, where translating by one corner in f64 is not
+/// exact once magnitudes differ by more than 2²⁹.
+pub(crate) fn cross_of_differences(p: Vec2, q: Vec2, r: Vec2, s: Vec2) -> f64 {
+    let [px, py, qx, qy, rx, ry, sx, sy] = [p.x, p.y, q.x, q.y, r.x, r.y, s.x, s.y].map(f64::from);
+    let left = (px - qx) * (ry - sy);
+    let right = (py - qy) * (rx - sx);
+    let det = left - right;
+    if det.abs() > FAST_PATH_FACTOR * (left.abs() + right.abs()) || !det.is_finite() {
+        return det;
+    }
+    exact_sum(&cross_products(px, py, qx, qy, rx, ry, sx, sy))
+}
+
+/// `(p − q) × (r − s) − (t − v) × (r' − s')`-style sums: the difference of two crosses of
+/// differences, each given as its four points, within 2⁻³⁰ relative of the exact value.
+pub(crate) fn difference_of_crosses(first: [Vec2; 4], second: [Vec2; 4]) -> f64 {
+    let a = first.map(|v| v.as_dvec2());
+    let b = second.map(|v| v.as_dvec2());
+    let l1 = (a[0].x - a[1].x) * (a[2].y - a[3].y);
+    let r1 = (a[0].y - a[1].y) * (a[2].x - a[3].x);
+    let l2 = (b[0].x - b[1].x) * (b[2].y - b[3].y);
+    let r2 = (b[0].y - b[1].y) * (b[2].x - b[3].x);
+    let value = (l1 - r1) - (l2 - r2);
+    let magnitude = l1.abs() + r1.abs() + l2.abs() + r2.abs();
+    // Two crosses and one more subtraction: twice the single-cross filter is a safe bound.
+    if value.abs() > 2.0 * FAST_PATH_FACTOR * magnitude || !value.is_finite() {
+        return value;
+    }
+    let c1 = cross_products(
+        a[0].x, a[0].y, a[1].x, a[1].y, a[2].x, a[2].y, a[3].x, a[3].y,
+    );
+    let c2 = cross_products(
+        b[0].x, b[0].y, b[1].x, b[1].y, b[2].x, b[2].y, b[3].x, b[3].y,
+    );
+    let mut terms = [0.0; 16];
+    terms[..8].copy_from_slice(&c1);
+    for (t, c) in terms[8..].iter_mut().zip(c2) {
+        *t = -c;
+    }
+    exact_sum(&terms)
+}
+
+/// The eight exact products of `(p − q) × (r − s)` expanded.
+#[allow(clippy::too_many_arguments)]
+fn cross_products(
+    px: f64,
+    py: f64,
+    qx: f64,
+    qy: f64,
+    rx: f64,
+    ry: f64,
+    sx: f64,
+    sy: f64,
+) -> [f64; 8] {
+    [
+        px * ry,
+        -(px * sy),
+        -(qx * ry),
+        qx * sy,
+        -(py * rx),
+        py * sx,
+        qy * rx,
+        -(qy * sx),
+    ]
 }
 
 /// Knuth's two-sum: `a + b = s + e` exactly.
@@ -82,7 +157,7 @@ fn two_sum(a: f64, b: f64) -> (f64, f64) {
 
 /// Add `b` to the non-overlapping expansion `e[..len]` (Shewchuk's `grow_expansion` with zero
 /// elimination); returns the new length, at most `len + 1`.
-fn grow_expansion(e: &mut [f64; 6], len: usize, b: f64) -> usize {
+fn grow_expansion(e: &mut [f64; MAX_TERMS], len: usize, b: f64) -> usize {
     let mut q = b;
     let mut out = 0;
     for i in 0..len {

@@ -44,9 +44,11 @@ const INSIDE_SLACK: f64 = 1e-9;
 /// Invert the bilinear map of the quad `[x, y, z, w]` (corner order as in
 /// [`bilinear`](crate::bilinear)) at the point `p`.
 ///
-/// Scale invariant and threshold-free: the solver works in f64 relative to corner `x`, where every
-/// f32 input and product is representable without overflow or underflow, so a quad of size 1e-30
-/// or at offset 1e7 behaves like a unit quad. A point exactly on the boundary is inside;
+/// Scale invariant and threshold-free: the quadratic's coefficients are computed from the f32
+/// inputs with an exact sign and 2⁻³⁰ relative accuracy (an exact expansion sum of f32 × f32
+/// products where plain f64 cancels), the rest in f64, where no f32 input or product overflows or
+/// underflows; so a quad of size 1e-30, at offset 1e7 or with corners of wildly different
+/// magnitudes behaves like a unit quad. A point exactly on the boundary is inside;
 /// inside results are clamped to `[0, 1]²`.
 ///
 /// When `s₁(β) = s₂(β)` (an edge of the quad collapsed to a point) and `p` is that point, every
@@ -86,8 +88,22 @@ pub fn inverse_bilinear_2d(p: Vec2, quad: [Vec2; 4]) -> Result<InverseBilinear, 
         // All four corners on one line (exactly): the map collapses everywhere.
         return Err(InterpError::DegenerateQuad);
     }
+    // The quadratic's coefficients from the f32 inputs directly, exact in sign and accurate to
+    // 2⁻³⁰ relative: translating by `x` in f64 first would round when magnitudes differ by more
+    // than 2²⁹, and can erase a small `A` (and with it a fold's second preimage).
+    let cross = crate::determinant::cross_of_differences;
+    let coefficients = [
+        cross(w, x, z, y),
+        crate::determinant::difference_of_crosses([z, y, p, x], [w, x, p, y]),
+        cross(p, x, p, y),
+    ];
     let origin = x.as_dvec2();
-    solve(p.as_dvec2() - origin, quad.map(|c| c.as_dvec2() - origin))
+    solve(
+        p.as_dvec2() - origin,
+        quad.map(|c| c.as_dvec2() - origin),
+        coefficients,
+        false,
+    )
 }
 
 /// Invert the bilinear map of a quad in 3D, planar or not.
@@ -124,11 +140,18 @@ pub fn inverse_bilinear_3d(p: Vec3, quad: [Vec3; 4]) -> Result<InverseBilinear, 
         let Some(frame) = Frame::perpendicular_to(normal) else {
             continue;
         };
-        let flat = q.map(|c| frame.project(c));
-        if is_strictly_convex(flat) {
-            return solve(frame.project(p), flat);
+        let projected = q.map(|c| frame.project(c));
+        let u = frame.project(p);
+        let result = solve(
+            u,
+            projected,
+            coefficients(u, projected),
+            is_flat_f64(projected),
+        );
+        if is_strictly_convex(projected) {
+            return result;
         }
-        last = solve(frame.project(p), flat);
+        last = result;
     }
     last
 }
@@ -157,11 +180,29 @@ fn is_strictly_convex(q: [DVec2; 4]) -> bool {
     turns.iter().all(|&t| t > 0.0) || turns.iter().all(|&t| t < 0.0)
 }
 
-/// The solver proper, in f64, with the quad translated so that `x` is near the origin.
-fn solve(u: DVec2, [x, y, z, w]: [DVec2; 4]) -> Result<InverseBilinear, InterpError> {
-    let a = (w - x).perp_dot(z - y);
-    let b = (z - y).perp_dot(u - x) - (w - x).perp_dot(u - y);
-    let c = (u - x).perp_dot(u - y);
+/// The coefficients `[A, B, C]` of the quadratic in β, in plain f64 (for the projected 3D quad).
+fn coefficients(u: DVec2, [x, y, z, w]: [DVec2; 4]) -> [f64; 3] {
+    [
+        (w - x).perp_dot(z - y),
+        (z - y).perp_dot(u - x) - (w - x).perp_dot(u - y),
+        (u - x).perp_dot(u - y),
+    ]
+}
+
+/// Whether the (projected) quad's corners are on one line, in plain f64.
+fn is_flat_f64([x, y, z, w]: [DVec2; 4]) -> bool {
+    (y - x).perp_dot(z - x) == 0.0 && (z - x).perp_dot(w - x) == 0.0
+}
+
+/// The solver proper, in f64, with the quad translated so that `x` is near the origin, the
+/// quadratic's coefficients `[A, B, C]` given, and whether the quad is flat decided by the caller
+/// (exactly for f32 input).
+fn solve(
+    u: DVec2,
+    [x, y, z, w]: [DVec2; 4],
+    [a, b, c]: [f64; 3],
+    flat: bool,
+) -> Result<InverseBilinear, InterpError> {
     let quad = [x, y, z, w];
     let size = quad
         .iter()
@@ -174,7 +215,6 @@ fn solve(u: DVec2, [x, y, z, w]: [DVec2; 4]) -> Result<InverseBilinear, InterpEr
         // Every β solves the equation: either the quad is flat (all corners on one line) or `u`
         // is the point where all rulings of a self-intersecting quad cross; then the rulings at
         // β = 0 and β = 1 stand for the whole family.
-        let flat = (y - x).perp_dot(z - x) == 0.0 && (z - x).perp_dot(w - x) == 0.0;
         if flat {
             return Err(InterpError::DegenerateQuad);
         }

@@ -331,3 +331,30 @@ fn degenerate_and_non_finite_quads() {
     let line3 = [Vec3::ZERO, Vec3::ONE, Vec3::splat(2.0), Vec3::splat(3.0)];
     assert!(inverse_bilinear_3d(Vec3::ONE, line3).is_err());
 }
+
+/// Found by fuzzing: corners of wildly different magnitude. Translating by corner `x` in f64
+/// rounds `2 − 1e-30` to 2 and erased `A ≈ 3e-30`, losing the fold's second preimage
+/// (0.5, 2/3); the coefficients are now computed from the f32 inputs exactly enough.
+#[test]
+fn mixed_magnitudes_keep_both_fold_preimages() {
+    for tiny in [1e-10f32, 1e-20, 1e-30, 1e-38] {
+        let quad = [
+            Vec2::new(0.0, tiny),
+            Vec2::new(tiny, 0.0),
+            Vec2::ONE,
+            Vec2::splat(2.0),
+        ];
+        let p = Vec2::ONE;
+        match inverse_bilinear_2d(p, quad).unwrap() {
+            InverseBilinear::Folded(a, b) => {
+                assert!(
+                    (a - Vec2::new(0.5, 2.0 / 3.0)).abs().max_element() < 1e-6,
+                    "{tiny}: {a:?}"
+                );
+                assert_eq!(b, Vec2::ONE, "{tiny}");
+            }
+            other => panic!("{tiny}: {other:?}"),
+        }
+        check_inverse_bilinear_2d(p, quad).unwrap();
+    }
+}

@@ -121,7 +121,8 @@ pub fn check_barycentric_2d(p: Vec2, tri: [Vec2; 3]) -> Result<(), String> {
     Ok(())
 }
 
-/// `inverse_bilinear_2d` never panics; non-finite input is an error; every preimage it reports
+/// `inverse_bilinear_2d` never panics; non-finite input is an error; `DegenerateQuad` only for
+/// exactly collinear corners; every preimage it reports
 /// maps back to the point within `4e-7` of the quad's size (plus the point's own distance from
 /// corner `x` for outside preimages), and inside preimages lie in `[0, 1]²`.
 ///
@@ -135,8 +136,23 @@ pub fn check_inverse_bilinear_2d(p: Vec2, quad: [Vec2; 4]) -> Result<(), String>
             other => Err(format!("non-finite input gave {other:?}")),
         };
     }
-    let Ok(result) = got else {
-        return Ok(());
+    let result = match got {
+        Ok(result) => result,
+        Err(InterpError::DegenerateQuad) => {
+            // Only a quad whose four corners lie exactly on one line may be called degenerate.
+            let [x, y, z, w] = quad;
+            let flat = [(x, y, z), (x, z, w), (x, y, w), (y, z, w)]
+                .iter()
+                .all(|&(a, b, c)| exact::orient2d_sign(a, b, c) == 0);
+            return if flat {
+                Ok(())
+            } else {
+                Err(format!(
+                    "DegenerateQuad for the non-flat quad {quad:?} at {p:?}"
+                ))
+            };
+        }
+        Err(e) => return Err(format!("unexpected error {e} for {p:?} in {quad:?}")),
     };
     let q64 = quad.map(|v| v.as_dvec2());
     let size = q64
