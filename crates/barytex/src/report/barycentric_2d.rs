@@ -65,11 +65,11 @@ impl Method {
         (weights, location_of_signs(weights.map(sign_f32)))
     }
 
-    /// The `k` of the documented accuracy bound `1 ulp + 2⁻ᵏ·κ`, where one is documented.
-    fn documented_exponent(self) -> Option<i32> {
+    /// The documented accuracy bound `1 ulp + c·κ` as its text and `c`, where one is documented.
+    fn documented_bound(self) -> Option<(&'static str, f64)> {
         match self {
-            Self::Default => Some(48),
-            Self::F64 => Some(49),
+            Self::Default => Some(("1 ulp", 0.0)),
+            Self::F64 => Some(("1 ulp + 2⁻⁴⁹·κ", 2f64.powi(-49))),
             Self::Naive | Self::Dop => None,
         }
     }
@@ -192,8 +192,8 @@ fn measure(method: Method, inputs: &[Input], references: &[Reference]) -> Measur
             abs = abs.max(e);
             ulps = ulps.max(e / ulp_f32(x));
             bar = bar.max(e / barycentric_bar(x, reference.kappa));
-            if let Some(k) = method.documented_exponent() {
-                let bound = ulp_f32(x) + reference.kappa * 2f64.powi(-k);
+            if let Some((_, c)) = method.documented_bound() {
+                let bound = ulp_f32(x) + reference.kappa * c;
                 documented = documented.max(e / bound);
             }
             if sign_f32(w) != Some(sign_f64(x)) {
@@ -319,13 +319,12 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
         for method in METHODS {
             let measured = measure(method, &set.inputs, &references);
             let ns = method.time(&set.inputs, settings);
-            if let Some(k) = method.documented_exponent() {
+            if let Some((text, _)) = method.documented_bound() {
                 let worst = measured.documented.iter().copied().fold(0.0, f64::max);
                 section.notes.push(format!(
-                    "{}: `{}` max error / its documented bound (1 ulp + 2⁻{}·κ) = {}{}",
+                    "{}: `{}` max error / its documented bound ({text}) = {}{}",
                     set.title,
                     method.name(),
-                    superscript(k),
                     fmt_ulps(worst),
                     if worst > 1.0 {
                         " — **exceeds the documented bound**"
