@@ -198,8 +198,8 @@ pub fn triangles_3d() -> impl Iterator<Item = Triangle3Case> {
 }
 
 /// The quad table: the seed's Example 10 quad, an exact parallelogram (A = 0, where thresholded
-/// solvers switch branches), a near-parallelogram, a trapezoid, a sliver, tiny scales down to
-/// 1e-30, subnormal size and offsets 1e4 … 1e7.
+/// solvers switch branches), a near-parallelogram, a trapezoid, a sliver, corners of mixed
+/// magnitude (1e-30 beside 1), tiny scales down to 1e-30, subnormal size and offsets 1e4 … 1e7.
 pub fn quads() -> impl Iterator<Item = QuadCase> {
     let example = [v(0.0, 0.0), v(4.0, 0.0), v(5.0, 3.0), v(0.0, 2.0)];
     let fixed = [
@@ -232,6 +232,12 @@ pub fn quads() -> impl Iterator<Item = QuadCase> {
             parameter: 1e-3,
             quad: [v(0.0, 0.0), v(1.0, 0.0), v(1.0, 1e-3), v(0.0, 2e-3)],
             alpha_beta: v(0.25, 0.5),
+        },
+        QuadCase {
+            name: "mixed magnitudes",
+            parameter: 1e-30,
+            quad: [v(1e-30, 1e-30), v(1.0, 0.0), v(1.0, 1.0), v(0.0, 1.0)],
+            alpha_beta: v(0.3, 0.6),
         },
         QuadCase {
             name: "subnormal size",
