@@ -8,10 +8,12 @@
 //!   tests and fuzz targets assert exactly the same things.
 //! - [`ulp`]: distances in units in the last place.
 //! - [`components`]: flatten any interpolable value into `f64` components for comparisons.
+//! - [`fuzz_inputs`]: the fuzz targets' byte layouts, shared with the regression replay.
 #![forbid(unsafe_code)]
 
 pub mod components;
 pub mod exact;
+pub mod fuzz_inputs;
 pub mod invariants;
 pub mod reference;
 pub mod strategies;
