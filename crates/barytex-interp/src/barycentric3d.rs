@@ -1,6 +1,6 @@
 //! 3D barycentric coordinates (seed 000, "Obliczenie barycentrycznych współrzędnych w R³").
 
-use glam::{DVec3, Vec3};
+use glam::{DVec3, Vec3, Vec3Swizzles};
 
 use crate::InterpError;
 
@@ -37,9 +37,18 @@ pub fn barycentric_3d(p: Vec3, tri: [Vec3; 3]) -> Result<[f32; 3], InterpError> 
     if !tri.iter().all(|v| v.is_finite()) {
         return Err(InterpError::NonFinite { what: "triangle" });
     }
+    // Each component of n = (b − a) × (c − a) is the orientation determinant of the triangle's
+    // projection onto a coordinate plane: exact in sign, 2⁻³⁰ relative, so `n = 0` exactly when
+    // the vertices are collinear (a rounded f64 cross product of rounded differences is not).
+    let [a32, b32, c32] = tri;
+    let det = crate::determinant::orient2d_det;
+    let n = DVec3::new(
+        det(a32.yz(), b32.yz(), c32.yz()),
+        det(a32.zx(), b32.zx(), c32.zx()),
+        det(a32.xy(), b32.xy(), c32.xy()),
+    );
     let p = p.as_dvec3();
     let [a, b, c] = tri.map(|v| v.as_dvec3());
-    let n = (b - a).cross(c - a);
     let nn = n.length_squared();
     if nn == 0.0 {
         return Err(InterpError::DegenerateTriangle);

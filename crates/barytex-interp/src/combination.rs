@@ -27,7 +27,14 @@ fn normalize<const N: usize>(weights: [f32; N]) -> Result<[f32; N], InterpError>
     if sum == 0.0 || !sum.is_finite() {
         return Err(InterpError::WeightsDoNotSumToOne { sum });
     }
-    Ok(weights.map(|w| (f64::from(w) / sum) as f32))
+    let normalized = weights.map(|w| (f64::from(w) / sum) as f32);
+    // A sum that cancels to a tiny value can push a quotient beyond f32's range.
+    if !normalized.iter().all(|w| w.is_finite()) {
+        return Err(InterpError::NonFinite {
+            what: "normalized weights",
+        });
+    }
+    Ok(normalized)
 }
 
 /// Weights `α₁ … α_N` with `Σαᵢ = 1`: an affine combination `Σαᵢxᵢ`, which affine maps preserve
@@ -58,7 +65,8 @@ impl<const N: usize> AffineCombination<N> {
     /// Divide the weights by their sum so they sum to 1.
     ///
     /// # Errors
-    /// [`InterpError::NonFinite`], or [`InterpError::WeightsDoNotSumToOne`] when the sum is 0.
+    /// [`InterpError::NonFinite`] (also when a quotient overflows f32), or
+    /// [`InterpError::WeightsDoNotSumToOne`] when the sum is 0.
     pub fn normalized(weights: [f32; N]) -> Result<Self, InterpError> {
         Ok(Self {
             weights: normalize(weights)?,

@@ -5,23 +5,24 @@
 //! nearly collinear triple its relative error reached 5e-8, enough to spoil f32 barycentric
 //! weights. For f32 inputs an exact answer is cheap instead: every product of two f32 values is
 //! exact in f64 (48 significant bits, exponents far inside f64's range), so the determinant is an
-//! exact sum of six f64 products, which an expansion sum (Shewchuk's `grow_expansion`) adds
-//! without error.
+//! exact sum of f64 products, which an expansion sum (Shewchuk's `grow_expansion`) adds without
+//! error.
 
 use glam::Vec2;
 
-/// Shewchuk's `ccwerrboundA`, `(3 + 16ε)ε` with `ε = 2⁻⁵³`: the naive f64 determinant is within
-/// `CCW_ERRBOUND_A · detsum` of the exact one.
+/// Shewchuk's `ccwerrboundA`, `(3 + 16ε)ε` with `ε = 2⁻⁵³`: the naive f64 cross product of
+/// differences is within `CCW_ERRBOUND_A · (|left| + |right|)` of the exact one.
 const CCW_ERRBOUND_A: f64 = (3.0 + 16.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2.0;
 
 /// The fast path is taken only when its relative error is below 2⁻³⁰, far below an f32 ulp.
 const FAST_PATH_FACTOR: f64 = (1u64 << 30) as f64 * CCW_ERRBOUND_A;
 
-/// `(b − a) × (c − a)` for f32 points (NaN or infinite when an input is): the sign is exact and the value is within
-/// `2⁻³⁰` relative of the exact determinant (exactly 0 when the points are collinear).
+/// `(b − a) × (c − a)` for f32 points (NaN or infinite when an input is): the sign is exact
+/// and the value is within `2⁻³⁰` relative of the exact determinant (exactly 0 when the points
+/// are collinear).
 #[inline]
 pub(crate) fn orient2d_det(a: Vec2, b: Vec2, c: Vec2) -> f64 {
-    det_with_filter(a, b, c, FAST_PATH_FACTOR)
+    filtered_cross(b, a, c, a, FAST_PATH_FACTOR)
 }
 
 /// `(b − a) × (c − a)` for finite f32 points with an exact sign; the value may be inaccurate
@@ -29,38 +30,38 @@ pub(crate) fn orient2d_det(a: Vec2, b: Vec2, c: Vec2) -> f64 {
 /// points reach the exact sum only when even the sign is in doubt.
 #[inline]
 pub(crate) fn orient2d_sign_det(a: Vec2, b: Vec2, c: Vec2) -> f64 {
-    det_with_filter(a, b, c, CCW_ERRBOUND_A)
+    filtered_cross(b, a, c, a, CCW_ERRBOUND_A)
 }
 
+/// `(p − q) × (r − s)` for f32 points, within 2⁻³⁰ relative of the exact value (exact sign): the
+/// coefficients of the inverse-bilinear quadratic, where translating by one corner in f64 is not
+/// exact once magnitudes differ by more than 2²⁹.
 #[inline]
-fn det_with_filter(a: Vec2, b: Vec2, c: Vec2, filter: f64) -> f64 {
-    let (ax, ay) = (f64::from(a.x), f64::from(a.y));
-    let (bx, by) = (f64::from(b.x), f64::from(b.y));
-    let (cx, cy) = (f64::from(c.x), f64::from(c.y));
-    let left = (bx - ax) * (cy - ay);
-    let right = (by - ay) * (cx - ax);
+pub(crate) fn cross_of_differences(p: Vec2, q: Vec2, r: Vec2, s: Vec2) -> f64 {
+    filtered_cross(p, q, r, s, FAST_PATH_FACTOR)
+}
+
+/// `(p − q) × (r − s)` in plain f64 when its error bound, `filter` times the products'
+/// magnitudes, is below its magnitude; otherwise the exact sum of the eight f32 × f32 products.
+#[inline]
+fn filtered_cross(p: Vec2, q: Vec2, r: Vec2, s: Vec2, filter: f64) -> f64 {
+    let [px, py, qx, qy, rx, ry, sx, sy] = [p.x, p.y, q.x, q.y, r.x, r.y, s.x, s.y].map(f64::from);
+    let left = (px - qx) * (ry - sy);
+    let right = (py - qy) * (rx - sx);
     let det = left - right;
     // A non-finite input always makes `det` NaN or infinite (every coordinate meets an infinite
     // difference in some product), and finite f32 inputs never do: callers test `det` instead of
-    // the six inputs.
+    // the eight inputs.
     if det.abs() > filter * (left.abs() + right.abs()) || !det.is_finite() {
         return det;
     }
-    exact_det(ax, ay, bx, by, cx, cy)
+    exact_cross(px, py, qx, qy, rx, ry, sx, sy)
 }
 
-/// The determinant expanded into six exact products, `ax·by − ax·cy + bx·cy − bx·ay + cx·ay −
-/// cx·by`, summed exactly as a floating-point expansion, then rounded.
 #[cold]
-fn exact_det(ax: f64, ay: f64, bx: f64, by: f64, cx: f64, cy: f64) -> f64 {
-    exact_sum(&[
-        ax * by,
-        -(ax * cy),
-        bx * cy,
-        -(bx * ay),
-        cx * ay,
-        -(cx * by),
-    ])
+#[allow(clippy::too_many_arguments)]
+fn exact_cross(px: f64, py: f64, qx: f64, qy: f64, rx: f64, ry: f64, sx: f64, sy: f64) -> f64 {
+    exact_sum(&cross_products(px, py, qx, qy, rx, ry, sx, sy))
 }
 
 /// The exact sum of at most [`MAX_TERMS`] f64 values (each product of two f32 values is one),
@@ -78,20 +79,6 @@ fn exact_sum(terms: &[f64]) -> f64 {
 
 /// The most terms [`exact_sum`] adds: the 16 products of the inverse-bilinear coefficient `B`.
 const MAX_TERMS: usize = 16;
-
-/// `(p − q) × (r − s)` for f32 points, within 2⁻³⁰ relative of the exact value (exact sign): the
-/// coefficients of the inverse-bilinear quadratic, where translating by one corner in f64 is not
-/// exact once magnitudes differ by more than 2²⁹.
-pub(crate) fn cross_of_differences(p: Vec2, q: Vec2, r: Vec2, s: Vec2) -> f64 {
-    let [px, py, qx, qy, rx, ry, sx, sy] = [p.x, p.y, q.x, q.y, r.x, r.y, s.x, s.y].map(f64::from);
-    let left = (px - qx) * (ry - sy);
-    let right = (py - qy) * (rx - sx);
-    let det = left - right;
-    if det.abs() > FAST_PATH_FACTOR * (left.abs() + right.abs()) || !det.is_finite() {
-        return det;
-    }
-    exact_sum(&cross_products(px, py, qx, qy, rx, ry, sx, sy))
-}
 
 /// `(p − q) × (r − s) − (t − v) × (r' − s')`-style sums: the difference of two crosses of
 /// differences, each given as its four points, within 2⁻³⁰ relative of the exact value.

@@ -13,8 +13,9 @@ use crate::Location;
 /// the line through `(12, 12)` and `(24, 24)`. Naive f32 orientation gets thousands of these
 /// signs wrong; an exact predicate none.
 ///
-/// Yields `(p, a, b)` with `a = (12, 12)` and `b = (24, 24)`.
+/// Yields `(p, a, b)` with `a = (12, 12)` and `b = (24, 24)`; `n` is clamped to 65 536.
 pub fn kettner_grid(n: u32) -> impl Iterator<Item = (Vec2, Vec2, Vec2)> {
+    let n = n.min(1 << 16);
     let a = Vec2::new(12.0, 12.0);
     let b = Vec2::new(24.0, 24.0);
     let base = 0.5f32.to_bits();

@@ -7,8 +7,10 @@ use crate::Interpolate;
 /// A point in homogeneous coordinates `(xyz : w)`, standing for `xyz / w` when `w ≠ 0`.
 ///
 /// Convex combinations of homogeneous points with `w > 0` are homogeneous coordinates of a point
-/// in the convex hull of the points they stand for (seed 000); the weights in 3D are the
-/// perspective-corrected ones, `αᵢwᵢ / Σαⱼwⱼ` (see [`perspective_correct_weights`]).
+/// in the convex hull of the points they stand for (seed 000): weights `αᵢ` on the homogeneous
+/// points become the weights `αᵢwᵢ / Σαⱼwⱼ` on the points themselves. (Perspective correction is
+/// the inverse direction: screen weights `αᵢ` become `(αᵢ/wᵢ) / Σ(αⱼ/wⱼ)`; see
+/// [`perspective_correct_weights`].)
 ///
 /// [`perspective_correct_weights`]: crate::perspective_correct_weights
 ///

@@ -36,10 +36,10 @@ impl InverseBilinear {
     }
 }
 
-/// How far outside `[0, 1]` a parameter may be computed and still count as inside. f64 rounding
-/// of a point exactly on the boundary stays far below it, and it is far below what the f32
-/// result can resolve (2⁻²⁴).
-const INSIDE_SLACK: f64 = 1e-9;
+/// How far outside `[0, 1]` a parameter may be computed and still count as inside: 2⁻²⁷, above
+/// the error of a root from coefficients accurate to 2⁻³⁰ for a point exactly on the boundary,
+/// and below the half-ulp (2⁻²⁵) that rounding the f32 result near 1 moves it anyway.
+const INSIDE_SLACK: f64 = 1.0 / (1u64 << 27) as f64;
 
 /// Invert the bilinear map of the quad `[x, y, z, w]` (corner order as in
 /// [`bilinear`](crate::bilinear)) at the point `p`.
@@ -57,8 +57,8 @@ const INSIDE_SLACK: f64 = 1e-9;
 /// preimages at `β = 0` and `β = 1`.
 ///
 /// # Errors
-/// [`InterpError::NonFinite`] for NaN or infinite input; [`InterpError::DegenerateQuad`] when the
-/// corners lie on one line (decided exactly) or the quadratic vanishes identically.
+/// [`InterpError::NonFinite`] for NaN or infinite input; [`InterpError::DegenerateQuad`] exactly
+/// when the four corners lie on one line (decided exactly).
 ///
 /// # Accuracy
 /// Inside convex quads: within `3e-7·(1 + κ)` of the exact preimage of the f32 input point, where
@@ -135,11 +135,8 @@ pub fn inverse_bilinear_3d(p: Vec3, quad: [Vec3; 4]) -> Result<InverseBilinear, 
     let q = quad.map(|c| c.as_dvec3() - origin);
     let diagonal_normal = (q[2] - q[0]).cross(q[3] - q[1]);
     let midpoint_normal = (q[1] + q[3] - q[0] - q[2]) * 0.5;
-    let mut last = Err(InterpError::DegenerateQuad);
-    for normal in [diagonal_normal, midpoint_normal] {
-        let Some(frame) = Frame::perpendicular_to(normal) else {
-            continue;
-        };
+    let solve_in = |normal: DVec3| {
+        let frame = Frame::perpendicular_to(normal)?;
         let projected = q.map(|c| frame.project(c));
         let u = frame.project(p);
         let result = solve(
@@ -148,12 +145,19 @@ pub fn inverse_bilinear_3d(p: Vec3, quad: [Vec3; 4]) -> Result<InverseBilinear, 
             coefficients(u, projected),
             is_flat_f64(projected),
         );
-        if is_strictly_convex(projected) {
-            return result;
-        }
-        last = result;
+        Some((result, is_strictly_convex(projected)))
+    };
+    // The diagonals' plane first (it is the quad's own plane when the quad is planar); the seed's
+    // plane only when that projection folds. A planar quad that folds is answered in its own
+    // plane, like `inverse_bilinear_2d` would.
+    let first = solve_in(diagonal_normal);
+    if let Some((result, true)) = first {
+        return result;
     }
-    last
+    if let Some((result, true)) = solve_in(midpoint_normal) {
+        return result;
+    }
+    first.map_or(Err(InterpError::DegenerateQuad), |(result, _)| result)
 }
 
 /// An orthonormal basis of the plane perpendicular to a normal.
@@ -191,7 +195,9 @@ fn coefficients(u: DVec2, [x, y, z, w]: [DVec2; 4]) -> [f64; 3] {
 
 /// Whether the (projected) quad's corners are on one line, in plain f64.
 fn is_flat_f64([x, y, z, w]: [DVec2; 4]) -> bool {
-    (y - x).perp_dot(z - x) == 0.0 && (z - x).perp_dot(w - x) == 0.0
+    [(x, y, z), (x, z, w), (x, y, w), (y, z, w)]
+        .iter()
+        .all(|&(a, b, c)| (b - a).perp_dot(c - a) == 0.0)
 }
 
 /// The solver proper, in f64, with the quad translated so that `x` is near the origin, the

@@ -77,7 +77,8 @@ exact_lerp!(
 
 /// The parameter `t` with `lerp(a, b, t) == x`: `(x − a)/(b − a)`.
 ///
-/// Returns `None` when `a == b` (every or no `t` would do) or when an input is not finite.
+/// Returns `None` when `a == b` (every or no `t` would do) or when an input is not finite. A
+/// quotient beyond f32's range is returned as the infinity of its sign.
 /// `inverse_lerp(a, b, a) == Some(0.0)` and `inverse_lerp(a, b, b) == Some(1.0)` exactly.
 ///
 /// # Accuracy
@@ -110,7 +111,9 @@ pub fn inverse_lerp(a: f32, b: f32, x: f32) -> Option<f32> {
 ///
 /// # Accuracy
 /// Evaluated in f64 from the f32 inputs and rounded once: within 1 ulp of the exact value for
-/// segments whose coordinates span less than 2²⁹ (test `segment_parameter_matches_exact`).
+/// coordinates of similar magnitude, as tested on `[−300, 300]²` (test
+/// `segment_parameter_matches_exact`); with wildly different magnitudes the f64 dot product can
+/// cancel.
 ///
 /// ```
 /// use barytex_interp::segment_parameter_2d;

@@ -9,9 +9,9 @@ use crate::Interpolate;
 /// Interpolating attributes with `βᵢ` equals interpolating them in 3D and projecting (the seed's
 /// hyperbolic interpolation). Works for any number of vertices: 2 for a line, 3 for a triangle.
 ///
-/// When all `wᵢ` are equal the projection is affine and the weights are returned unchanged,
-/// bit for bit. The screen weights are expected to sum to 1; the result always does (within
-/// rounding).
+/// When all `wᵢ` are equal the projection is affine: screen weights that sum to exactly 1 (in
+/// f64) are returned unchanged, bit for bit; others go through the formula, which normalises
+/// them. The result always sums to 1 within rounding.
 ///
 /// Returns `None` when an input is not finite, a `wᵢ` is `≤ 0` (behind the eye: clip first), or
 /// `Σ αⱼ/wⱼ` is 0.
@@ -34,7 +34,8 @@ pub fn perspective_correct_weights<const N: usize>(
     if !(screen.iter().all(|a| a.is_finite()) && w.iter().all(|&wi| wi.is_finite() && wi > 0.0)) {
         return None;
     }
-    if w.iter().all(|&wi| wi == w[0]) {
+    let screen_sum: f64 = screen.iter().map(|&a| f64::from(a)).sum();
+    if w.iter().all(|&wi| wi == w[0]) && screen_sum == 1.0 {
         return Some(screen);
     }
     let mut q = [0.0f64; N];

@@ -159,3 +159,20 @@ fn vertices_and_centroid_3d() {
         assert!((w - 1.0 / 3.0).abs() < 1e-6);
     }
 }
+
+/// Review finding: collinearity is decided exactly, even with a large exponent gap where rounded
+/// f64 differences would leave a tiny non-zero normal (and huge weights).
+#[test]
+fn exactly_collinear_with_exponent_gaps_is_degenerate() {
+    let a = Vec3::new(1e-30, 2e-30, 3e-30);
+    let d = Vec3::new(1.0, 2.0, 3.0);
+    for t in [1e10f32, 3.0, 0.125] {
+        let tri = [a, a + d, a + d * t];
+        let exact_n = exact::barycentric_3d(Vec3::ZERO, tri);
+        let got = barycentric_3d(Vec3::ONE, tri);
+        match exact_n {
+            None => assert_eq!(got, Err(InterpError::DegenerateTriangle), "{tri:?}"),
+            Some(_) => check(Vec3::ONE, tri).unwrap(),
+        }
+    }
+}

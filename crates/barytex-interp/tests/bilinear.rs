@@ -358,3 +358,32 @@ fn mixed_magnitudes_keep_both_fold_preimages() {
         check_inverse_bilinear_2d(p, quad).unwrap();
     }
 }
+
+/// Review finding: a planar non-convex quad in 3D was projected onto a line (the seed's plane
+/// lies in the quad's plane then) and reported degenerate; it is answered in its own plane.
+#[test]
+fn planar_non_convex_quad_in_3d() {
+    let dart2 = [
+        Vec2::new(0.0, 0.0),
+        Vec2::new(4.0, 0.0),
+        Vec2::new(1.0, 1.0),
+        Vec2::new(0.0, 4.0),
+    ];
+    let dart3 = dart2.map(|v| v.extend(0.0));
+    for p in [
+        Vec2::new(0.5, 0.5),
+        Vec2::new(1.5, 0.25),
+        Vec2::new(0.2, 2.0),
+    ] {
+        let want = inverse_bilinear_2d(p, dart2).unwrap();
+        let got = inverse_bilinear_3d(p.extend(0.0), dart3).unwrap();
+        assert_eq!(
+            got.inside().is_some(),
+            want.inside().is_some(),
+            "{p:?}: {got:?} vs {want:?}"
+        );
+        if let (Some(a), Some(b)) = (got.inside(), want.inside()) {
+            assert!((a - b).abs().max_element() < 1e-6, "{p:?}: {a:?} vs {b:?}");
+        }
+    }
+}

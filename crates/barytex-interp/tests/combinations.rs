@@ -116,3 +116,12 @@ fn homogeneous_points_at_infinity() {
     );
     assert_eq!(Homogeneous3::from_vec4(v).to_vec4(), v);
 }
+
+/// Review finding: a sum that cancels to a tiny value made `normalized` overflow to infinity.
+#[test]
+fn normalized_rejects_overflowing_quotients() {
+    assert!(matches!(
+        AffineCombination::normalized([3e38, -3e38, 1e-45]),
+        Err(InterpError::NonFinite { .. })
+    ));
+}

@@ -123,8 +123,8 @@ pub fn check_barycentric_2d(p: Vec2, tri: [Vec2; 3]) -> Result<(), String> {
 
 /// `inverse_bilinear_2d` never panics; non-finite input is an error; `DegenerateQuad` only for
 /// exactly collinear corners; every preimage it reports
-/// maps back to the point within `4e-7` of the quad's size (plus the point's own distance from
-/// corner `x` for outside preimages), and inside preimages lie in `[0, 1]²`.
+/// inside `[0, 1]²` maps back to the point within `4e-7` of the quad's size, and no reported
+/// preimage is NaN.
 ///
 /// # Errors
 /// A description of the violated invariant.

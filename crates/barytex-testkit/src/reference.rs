@@ -32,7 +32,12 @@ pub fn inverse_bilinear_newton(p: DVec2, quad: [DVec2; 4], start: DVec2) -> Opti
             return Some(ab);
         }
     }
-    Some(ab)
+    // Not converged to a step of 1e-17: accept only a tiny residual, relative to the quad.
+    let size = quad
+        .iter()
+        .map(|c| (*c - quad[0]).length())
+        .fold(0.0, f64::max);
+    ((bilinear_f64(quad, ab) - p).length() <= 1e-14 * size).then_some(ab)
 }
 
 /// A port of the widely copied inverse-bilinear routine of Quilez, which pbrt-v4's
