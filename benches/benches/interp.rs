@@ -22,113 +22,35 @@ use barytex_interp::{
     inverse_bilinear_3d, locate_2d, orient2d, perspective_correct_weights,
 };
 use barytex_testkit::reference::quilez_inverse_bilinear_f32;
-use barytex_testkit::strategies::{is_strictly_convex_ccw, shape_quality};
+use barytex_testkit::seeded::{self, XorShift};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::{FloatExt, Vec2, Vec3};
 
 /// Inputs per batch; every bench reports time per element of the batch.
 const BATCH: usize = 1024;
 
-/// Marsaglia's xorshift64: tiny, seeded, reproducible.
-struct XorShift(u64);
-
-impl XorShift {
-    fn new(seed: u64) -> Self {
-        Self(seed.max(1))
-    }
-
-    fn next_u64(&mut self) -> u64 {
-        let mut x = self.0;
-        x ^= x << 13;
-        x ^= x >> 7;
-        x ^= x << 17;
-        self.0 = x;
-        x
-    }
-
-    /// Uniform in `[lo, hi)` with 24 random bits.
-    fn f32_in(&mut self, lo: f32, hi: f32) -> f32 {
-        let unit = (self.next_u64() >> 40) as f32 / (1u32 << 24) as f32;
-        lo + (hi - lo) * unit
-    }
-
-    fn vec2_in(&mut self, lo: f32, hi: f32) -> Vec2 {
-        Vec2::new(self.f32_in(lo, hi), self.f32_in(lo, hi))
-    }
-
-    fn vec3_in(&mut self, lo: f32, hi: f32) -> Vec3 {
-        Vec3::new(
-            self.f32_in(lo, hi),
-            self.f32_in(lo, hi),
-            self.f32_in(lo, hi),
-        )
-    }
-}
-
-/// A well-shaped triangle in `[-100, 100]²` (shape quality ≥ 0.05, either orientation) and a
-/// point with affine weights in about `[-0.25, 1.25]` (some inside, some outside).
+/// `BATCH` seeded triangles and points (the shapes the report measures too).
 fn triangles_2d(rng: &mut XorShift) -> Vec<(Vec2, [Vec2; 3])> {
-    let mut out = Vec::with_capacity(BATCH);
-    while out.len() < BATCH {
-        let tri = [
-            rng.vec2_in(-100.0, 100.0),
-            rng.vec2_in(-100.0, 100.0),
-            rng.vec2_in(-100.0, 100.0),
-        ];
-        if shape_quality(tri) < 0.05 {
-            continue;
-        }
-        let (u, v) = (rng.f32_in(-0.25, 1.25), rng.f32_in(-0.25, 1.25));
-        let p = tri[0] * (1.0 - u - v) + tri[1] * u + tri[2] * v;
-        out.push((p, tri));
-    }
-    out
+    seeded::triangles_2d(rng, BATCH)
 }
 
-/// A well-shaped triangle in `[-100, 100]³` and a point of its plane (up to rounding).
+/// `BATCH` seeded 3D triangles and points of their planes.
 fn triangles_3d(rng: &mut XorShift) -> Vec<(Vec3, [Vec3; 3])> {
-    let mut out = Vec::with_capacity(BATCH);
-    while out.len() < BATCH {
-        let tri = [
-            rng.vec3_in(-100.0, 100.0),
-            rng.vec3_in(-100.0, 100.0),
-            rng.vec3_in(-100.0, 100.0),
-        ];
-        let [a, b, c] = tri.map(|v| v.as_dvec3());
-        let area2 = (b - a).cross(c - a).length();
-        let longest = (b - a)
-            .length_squared()
-            .max((c - b).length_squared())
-            .max((a - c).length_squared());
-        if area2 < 0.05 * longest {
-            continue;
-        }
-        let (u, v) = (rng.f32_in(-0.25, 1.25), rng.f32_in(-0.25, 1.25));
-        let p = tri[0] * (1.0 - u - v) + tri[1] * u + tri[2] * v;
-        out.push((p, tri));
-    }
-    out
+    seeded::triangles_3d(rng, BATCH)
 }
 
-/// A strictly convex quad (corners on a perturbed circle) and a point mapped forward from
-/// `(α, β)` in `[0.01, 0.99]²`.
+/// `BATCH` strictly convex quads, each with a point mapped forward from `(α, β)` in
+/// `[0.01, 0.99]²`.
 fn quads_2d(rng: &mut XorShift) -> Vec<(Vec2, [Vec2; 4])> {
-    let mut out = Vec::with_capacity(BATCH);
-    while out.len() < BATCH {
-        let start = rng.f32_in(0.0, std::f32::consts::TAU);
-        let mut quad = [Vec2::ZERO; 4];
-        for (i, corner) in quad.iter_mut().enumerate() {
-            let angle = start + i as f32 * std::f32::consts::FRAC_PI_2 + rng.f32_in(-0.4, 0.4);
-            let radius = rng.f32_in(0.7, 1.3);
-            *corner = Vec2::new(angle.cos(), angle.sin()) * radius;
-        }
-        if !is_strictly_convex_ccw(quad) {
-            continue;
-        }
-        let p = bilinear(quad, rng.f32_in(0.01, 0.99), rng.f32_in(0.01, 0.99));
-        out.push((p, quad));
-    }
-    out
+    (0..BATCH)
+        .map(|_| {
+            let quad = seeded::convex_quad(rng);
+            (
+                bilinear(quad, rng.f32_in(0.01, 0.99), rng.f32_in(0.01, 0.99)),
+                quad,
+            )
+        })
+        .collect()
 }
 
 fn config() -> Criterion {

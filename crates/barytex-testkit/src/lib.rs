@@ -6,6 +6,7 @@
 //! - [`reference`](mod@reference): f64 reference implementations where exact ones are impractical.
 //! - [`invariants`]: checks that return `Err(description)` instead of panicking, so property
 //!   tests and fuzz targets assert exactly the same things.
+//! - [`seeded`]: a seeded generator and input shapes shared by the benchmarks and the report.
 //! - [`ulp`]: distances in units in the last place.
 //! - [`components`]: flatten any interpolable value into `f64` components for comparisons.
 //! - [`fuzz_inputs`]: the fuzz targets' byte layouts, shared with the regression replay.
@@ -16,6 +17,7 @@ pub mod exact;
 pub mod fuzz_inputs;
 pub mod invariants;
 pub mod reference;
+pub mod seeded;
 pub mod strategies;
 pub mod ulp;
 

@@ -7,7 +7,6 @@
 
 mod demo;
 mod report;
-mod rng;
 mod timing;
 
 use std::path::PathBuf;

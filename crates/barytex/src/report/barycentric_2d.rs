@@ -8,14 +8,13 @@ use barytex_interp::methods::{
 use barytex_interp::{Location, barycentric_2d};
 use barytex_testkit::exact;
 use barytex_testkit::invariants::{barycentric_bar, barycentric_condition};
-use barytex_testkit::strategies::shape_quality;
 use barytex_testkit::ulp::ulp_f32;
 use glam::Vec2;
 
 use super::table::{fmt_err, fmt_ulps, per_case_matrix};
 use super::{ErrorStats, Row, Section, Settings, Table};
-use crate::rng::XorShift;
 use crate::timing::ns_per_call;
+use barytex_testkit::seeded::{self, XorShift};
 
 type Input = (Vec2, [Vec2; 3]);
 
@@ -210,21 +209,7 @@ fn measure(method: Method, inputs: &[Input], references: &[Reference]) -> Measur
 }
 
 fn random_inputs(n: usize) -> Vec<Input> {
-    let mut rng = XorShift::new(0xba2d_2024);
-    let mut out = Vec::with_capacity(n);
-    while out.len() < n {
-        let tri = [
-            rng.vec2_in(-100.0, 100.0),
-            rng.vec2_in(-100.0, 100.0),
-            rng.vec2_in(-100.0, 100.0),
-        ];
-        if shape_quality(tri) < 0.05 {
-            continue;
-        }
-        let (u, v) = (rng.f32_in(-0.25, 1.25), rng.f32_in(-0.25, 1.25));
-        out.push((tri[0] * (1.0 - u - v) + tri[1] * u + tri[2] * v, tri));
-    }
-    out
+    seeded::triangles_2d(&mut XorShift::new(0xba2d_2024), n)
 }
 
 struct InputSet {

@@ -13,8 +13,8 @@ use glam::Vec3;
 use super::barycentric_2d::{sign_f32, superscript};
 use super::table::{fmt_err, fmt_ulps, per_case_matrix};
 use super::{ErrorStats, Row, Section, Settings, Table};
-use crate::rng::XorShift;
 use crate::timing::ns_per_call;
+use barytex_testkit::seeded::{self, XorShift};
 
 type Input = (Vec3, [Vec3; 3]);
 
@@ -101,26 +101,7 @@ fn reference((p, tri): Input) -> Option<([f64; 3], f64)> {
 }
 
 fn random_inputs(n: usize) -> Vec<Input> {
-    let mut rng = XorShift::new(0xba3d_2024);
-    let mut out = Vec::with_capacity(n);
-    while out.len() < n {
-        let tri = [
-            rng.vec3_in(-100.0, 100.0),
-            rng.vec3_in(-100.0, 100.0),
-            rng.vec3_in(-100.0, 100.0),
-        ];
-        let [a, b, c] = tri.map(|v| v.as_dvec3());
-        let longest = (b - a)
-            .length_squared()
-            .max((c - b).length_squared())
-            .max((a - c).length_squared());
-        if (b - a).cross(c - a).length() < 0.05 * longest {
-            continue;
-        }
-        let (u, v) = (rng.f32_in(-0.25, 1.25), rng.f32_in(-0.25, 1.25));
-        out.push((tri[0] * (1.0 - u - v) + tri[1] * u + tri[2] * v, tri));
-    }
-    out
+    seeded::triangles_3d(&mut XorShift::new(0xba3d_2024), n)
 }
 
 /// Run the family.

@@ -13,8 +13,9 @@ use glam::{DVec2, Vec2};
 
 use super::table::{fmt_err, fmt_ulps, per_case_matrix};
 use super::{ErrorStats, Row, Section, Settings, Table};
-use crate::rng::{XorShift, step_ulps};
 use crate::timing::ns_per_call;
+use barytex_testkit::seeded::{self, XorShift};
+use barytex_testkit::strategies::step_ulps;
 
 /// The bar of REFERENCES.md at unit scale.
 const BAR: f64 = 3e-7;
@@ -117,26 +118,11 @@ fn condition(quad: [Vec2; 4]) -> f64 {
     diameter / nearest
 }
 
-/// A strictly convex quad with corners on a perturbed unit circle, one per quadrant-ish.
-fn random_quad(rng: &mut XorShift) -> [Vec2; 4] {
-    loop {
-        let start = rng.f32_in(0.0, std::f32::consts::TAU);
-        let mut quad = [Vec2::ZERO; 4];
-        for (i, corner) in quad.iter_mut().enumerate() {
-            let angle = start + i as f32 * std::f32::consts::FRAC_PI_2 + rng.f32_in(-0.4, 0.4);
-            *corner = Vec2::new(angle.cos(), angle.sin()) * rng.f32_in(0.7, 1.3);
-        }
-        if is_strictly_convex_ccw(quad) {
-            return quad;
-        }
-    }
-}
-
 fn random_cases(n: usize, seed: u64, scale: f32) -> Vec<Case> {
     let mut rng = XorShift::new(seed);
     let mut out = Vec::with_capacity(n);
     while out.len() < n {
-        let quad = random_quad(&mut rng).map(|c| c * scale);
+        let quad = seeded::convex_quad(&mut rng).map(|c| c * scale);
         let ab = Vec2::new(rng.f32_in(0.01, 0.99), rng.f32_in(0.01, 0.99));
         out.extend(Case::new(quad, ab));
     }

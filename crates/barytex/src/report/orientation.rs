@@ -8,8 +8,9 @@ use barytex_testkit::exact;
 use glam::Vec2;
 
 use super::{Row, Section, Settings, Table};
-use crate::rng::{XorShift, step_ulps};
 use crate::timing::ns_per_call;
+use barytex_testkit::seeded::XorShift;
+use barytex_testkit::strategies::step_ulps;
 
 type Input = (Vec2, Vec2, Vec2);
 
