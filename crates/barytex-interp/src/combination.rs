@@ -8,11 +8,16 @@ fn sum_tolerance(n: usize) -> f64 {
     n as f64 * f64::from(f32::EPSILON)
 }
 
-fn checked_sum(weights: &[f32]) -> Result<f64, InterpError> {
+/// The f64 sum of finite weights; `NonFinite` when one is NaN or infinite.
+fn finite_sum(weights: &[f32]) -> Result<f64, InterpError> {
     if !weights.iter().all(|w| w.is_finite()) {
         return Err(InterpError::NonFinite { what: "weights" });
     }
-    let sum: f64 = weights.iter().map(|&w| f64::from(w)).sum();
+    Ok(weights.iter().map(|&w| f64::from(w)).sum())
+}
+
+fn checked_sum(weights: &[f32]) -> Result<f64, InterpError> {
+    let sum = finite_sum(weights)?;
     if (sum - 1.0).abs() > sum_tolerance(weights.len()) {
         return Err(InterpError::WeightsDoNotSumToOne { sum });
     }
@@ -20,10 +25,7 @@ fn checked_sum(weights: &[f32]) -> Result<f64, InterpError> {
 }
 
 fn normalize<const N: usize>(weights: [f32; N]) -> Result<[f32; N], InterpError> {
-    if !weights.iter().all(|w| w.is_finite()) {
-        return Err(InterpError::NonFinite { what: "weights" });
-    }
-    let sum: f64 = weights.iter().map(|&w| f64::from(w)).sum();
+    let sum = finite_sum(&weights)?;
     if sum == 0.0 || !sum.is_finite() {
         return Err(InterpError::WeightsDoNotSumToOne { sum });
     }

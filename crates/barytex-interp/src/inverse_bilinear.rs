@@ -243,11 +243,12 @@ fn solve(
         if !beta.is_finite() || (slot == 1 && roots[0] == beta) {
             continue;
         }
-        let ab = DVec2::new(alpha_for(u, quad, beta), beta);
+        let segment = ruling(quad, beta);
+        let ab = DVec2::new(alpha_on(u, segment), beta);
         // A root of the quadratic is a preimage only if it maps back to `u`: where
         // `s₁(β) = s₂(β)` the equation `(s₁ − u) × (s₂ − u) = 0` holds for every `u`, and on
         // nearly flat quads rounding can produce such spurious roots.
-        if !maps_to(quad, ab, u, size) {
+        if !maps_to(segment, ab, u, size) {
             continue;
         }
         let distance = distance_outside_unit_square(ab);
@@ -268,32 +269,26 @@ fn solve(
     })
 }
 
-fn s1_of([x, _, _, w]: [DVec2; 4], beta: f64) -> DVec2 {
-    x + (w - x) * beta
-}
-
-fn s2_of([_, y, z, _]: [DVec2; 4], beta: f64) -> DVec2 {
-    y + (z - y) * beta
+/// The ruling of the quad at `β`: the segment `s₁(β) s₂(β)` with `s₁ = (1−β)x + βw` and
+/// `s₂ = (1−β)y + βz`.
+fn ruling([x, y, z, w]: [DVec2; 4], beta: f64) -> (DVec2, DVec2) {
+    (x + (w - x) * beta, y + (z - y) * beta)
 }
 
 /// How far, relative to the quad's size, a candidate may map from `u`: 2⁻²⁶, a quarter of what
 /// rounding the answer to f32 moves it, and far above f64 rounding of well-posed roots.
 const RESIDUAL_TOLERANCE: f64 = 1.0 / (1u64 << 26) as f64;
 
-/// Whether `(α, β)` maps back to `u`, relative to the quad's size (and to `|(α, β)|` for
-/// preimages far outside the unit square).
-fn maps_to(quad: [DVec2; 4], ab: DVec2, u: DVec2, size: f64) -> bool {
-    let s1 = s1_of(quad, ab.y);
-    let s2 = s2_of(quad, ab.y);
+/// Whether `(α, β)`, with `(s1, s2)` the ruling at β, maps back to `u`, relative to the quad's
+/// size (and to `|(α, β)|` for preimages far outside the unit square).
+fn maps_to((s1, s2): (DVec2, DVec2), ab: DVec2, u: DVec2, size: f64) -> bool {
     let back = s1 + (s2 - s1) * ab.x;
     let scale = size * (1.0 + ab.abs().max_element());
     (back - u).abs().max_element() <= RESIDUAL_TOLERANCE * scale
 }
 
-/// α by projecting `u` onto `s₁(β) s₂(β)`; 0 when that segment collapses to a point.
-fn alpha_for(u: DVec2, quad: [DVec2; 4], beta: f64) -> f64 {
-    let s1 = s1_of(quad, beta);
-    let s2 = s2_of(quad, beta);
+/// α by projecting `u` onto the ruling `s₁ s₂`; 0 when it collapses to a point.
+fn alpha_on(u: DVec2, (s1, s2): (DVec2, DVec2)) -> f64 {
     let d = s2 - s1;
     let den = d.length_squared();
     if den == 0.0 {

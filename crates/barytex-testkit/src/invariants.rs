@@ -2,8 +2,8 @@
 //! rather than panicking, so a fuzz target and a proptest assert the same thing.
 
 use barytex_interp::{
-    InterpError, InverseBilinear, Location, Orientation, barycentric_2d, inverse_bilinear_2d,
-    locate_2d, orient2d,
+    InterpError, InverseBilinear, Location, barycentric_2d, inverse_bilinear_2d, locate_2d,
+    orient2d,
 };
 use glam::{DVec2, Vec2};
 
@@ -186,10 +186,4 @@ pub fn check_inverse_bilinear_2d(p: Vec2, quad: [Vec2; 4]) -> Result<(), String>
 #[must_use]
 pub fn inverse_bilinear_error(ab: Vec2, reference: DVec2) -> f64 {
     (ab.as_dvec2() - reference).abs().max_element()
-}
-
-/// The orientation of the triangle, for tests that need it.
-#[must_use]
-pub fn orientation_of(tri: [Vec2; 3]) -> Option<Orientation> {
-    orient2d(tri[0], tri[1], tri[2])
 }
