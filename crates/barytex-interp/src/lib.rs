@@ -45,12 +45,17 @@ mod determinant;
 mod error;
 pub mod hard_cases;
 mod homogeneous;
+mod hull2d;
+mod hull3d;
 mod interpolate;
 mod inverse_bilinear;
 mod lerp;
 mod math;
 mod orient;
+mod orient3d;
 mod perspective;
+mod polygon;
+mod slerp;
 mod trilinear;
 
 pub use barycentric2d::{Barycentric, Location, barycentric_2d, locate_2d};

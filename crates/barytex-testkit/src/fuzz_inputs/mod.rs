@@ -10,6 +10,11 @@
 //! A failing input prints as a Rust block ([`orient_barycentric_code`],
 //! [`inverse_bilinear_code`]) that a regression test can paste.
 
+pub mod hull2d;
+pub mod hull3d;
+pub mod polygon;
+pub mod slerp;
+
 use std::fmt::Write as _;
 
 use glam::Vec2;

@@ -1,0 +1,1 @@
+//! Hard cases for the 2D and 3D convex hulls.

@@ -1,0 +1,1 @@
+//! Hard cases for generalized barycentric coordinates over polygons.

@@ -1,0 +1,1 @@
+//! 2D convex hull with exact orientation.

@@ -1,0 +1,1 @@
+//! 3D convex hull with exact orientation.

@@ -1,0 +1,1 @@
+//! Generalized barycentric coordinates over convex polygons (Wachspress, mean value).

@@ -1,0 +1,1 @@
+//! The SLERP family: exact quaternion and unit-vector slerp, and fast approximations.

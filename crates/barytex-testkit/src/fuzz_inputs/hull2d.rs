@@ -1,0 +1,1 @@
+//! Byte layout and checks of the `hull2d` fuzz target.
