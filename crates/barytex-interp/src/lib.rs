@@ -34,6 +34,9 @@
 #[cfg(not(any(feature = "std", feature = "libm")))]
 compile_error!("barytex-interp needs the `std` feature or, on no_std targets, the `libm` feature");
 
+// The hulls return their vertex lists in a `Vec`: the crate needs an allocator, not `std`.
+extern crate alloc;
+
 #[cfg(feature = "std")]
 extern crate std;
 
