@@ -23,3 +23,25 @@ pub(crate) fn fma_f32(a: f32, b: f32, c: f32) -> f32 {
 pub(crate) fn fma_f32(a: f32, b: f32, c: f32) -> f32 {
     libm::fmaf(a, b, c)
 }
+
+macro_rules! float_fns {
+    ($($name:ident($($arg:ident: $t:ty),*) -> $r:ty = $std:expr, $libm:path;)*) => {$(
+        #[cfg(feature = "std")]
+        #[inline]
+        pub(crate) fn $name($($arg: $t),*) -> $r {
+            $std
+        }
+
+        #[cfg(all(not(feature = "std"), feature = "libm"))]
+        #[inline]
+        pub(crate) fn $name($($arg: $t),*) -> $r {
+            $libm($($arg),*)
+        }
+    )*};
+}
+
+float_fns! {
+    sqrt_f32(x: f32) -> f32 = x.sqrt(), libm::sqrtf;
+    sin_cos(x: f64) -> (f64, f64) = x.sin_cos(), libm::sincos;
+    atan2(y: f64, x: f64) -> f64 = y.atan2(x), libm::atan2;
+}

@@ -6,6 +6,7 @@
 //! - [`reference`](mod@reference): f64 reference implementations where exact ones are impractical.
 //! - [`invariants`]: checks that return `Err(description)` instead of panicking, so property
 //!   tests and fuzz targets assert exactly the same things.
+//! - [`sphere`]: f64 references for the SLERP family (slices, any dimension).
 //! - [`seeded`]: a seeded generator and input shapes shared by the benchmarks and the report.
 //! - [`ulp`]: distances in units in the last place.
 //! - [`components`]: flatten any interpolable value into `f64` components for comparisons.
@@ -18,6 +19,7 @@ pub mod fuzz_inputs;
 pub mod invariants;
 pub mod reference;
 pub mod seeded;
+pub mod sphere;
 pub mod strategies;
 pub mod ulp;
 

@@ -1,1 +1,0 @@
-//! The SLERP family: exact quaternion and unit-vector slerp, and fast approximations.

@@ -1,0 +1,38 @@
+//! The SLERP family: exact spherical linear interpolation of unit vectors and unit quaternions,
+//! its fast approximations, and normal interpolation for Phong shading.
+//!
+//! | need | items |
+//! |---|---|
+//! | exact, total, f32 and f64 | [`slerp_vec2`], [`slerp_vec3`], [`slerp_vec3a`], [`slerp_vec4`], [`slerp_dvec2`], [`slerp_dvec3`], [`slerp_dvec4`], [`slerp_quat`], [`slerp_dquat`] and their `try_` variants |
+//! | fast quaternion approximations | [`nlerp_quat`], [`nlerp_corrected_quat`], [`slerp_eberly_quat`] |
+//! | pick by speed against error | [`QuatInterpolation`] with its `angle_bound` / `length_bound` |
+//! | normals | [`interpolate_normal`], [`NormalInterpolation`], [`renormalize_spacing_error`] |
+
+mod eberly;
+mod exact;
+mod method;
+mod nlerp;
+mod normals;
+mod trig;
+mod unit_vector;
+
+pub use eberly::{EBERLY_MAX_TERMS, slerp_eberly_quat};
+pub use exact::{
+    QuatPath, slerp_dquat, slerp_dvec2, slerp_dvec3, slerp_dvec4, slerp_quat, slerp_vec2,
+    slerp_vec3, slerp_vec3a, slerp_vec4, try_slerp_dquat, try_slerp_dvec2, try_slerp_dvec3,
+    try_slerp_dvec4, try_slerp_quat, try_slerp_vec2, try_slerp_vec3, try_slerp_vec3a,
+    try_slerp_vec4,
+};
+pub use method::QuatInterpolation;
+pub use nlerp::{nlerp_corrected_quat, nlerp_quat};
+pub use normals::{NormalInterpolation, interpolate_normal, renormalize_spacing_error};
+
+/// Largest angle (radians) between an f32 exact SLERP result and the true SLERP of its (unit)
+/// inputs, for `t` in `[0, 1]`; measured by `tests/slerp.rs` (`exact_slerp_*`).
+pub const SLERP_F32_ANGLE_BOUND: f32 = 2.4e-7;
+/// Largest `|length − 1|` of an f32 exact SLERP result for unit inputs and `t` in `[0, 1]`.
+pub const SLERP_F32_LENGTH_BOUND: f32 = 3.0e-7;
+/// Largest angle (radians) between an f64 exact SLERP result and the true SLERP of its inputs.
+pub const SLERP_F64_ANGLE_BOUND: f64 = 1.0e-15;
+/// Largest `|length − 1|` of an f64 exact SLERP result for unit inputs and `t` in `[0, 1]`.
+pub const SLERP_F64_LENGTH_BOUND: f64 = 6.0e-16;
