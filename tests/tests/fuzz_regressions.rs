@@ -55,6 +55,11 @@ fn replay(target: &str, check: fn(&[u8]) -> Result<(), String>) {
 }
 
 #[test]
+fn slerp_regressions() {
+    replay("slerp", barytex_testkit::fuzz_inputs::slerp::check_slerp);
+}
+
+#[test]
 fn orient_barycentric_regressions() {
     replay("orient_barycentric", check_orient_barycentric);
 }

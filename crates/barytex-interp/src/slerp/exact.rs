@@ -36,6 +36,9 @@ pub enum QuatPath {
     AsGiven,
 }
 
+/// Relative size below which the perpendicular part of `b` is rounding noise (4·ε).
+const PARALLEL_TOLERANCE: f64 = 4.0 * f64::EPSILON;
+
 /// SLERP of unit vectors in f64, any finite `t`, with the trigonometry of `K`.
 #[inline]
 pub(crate) fn slerp_unit<V: Ops<Scalar = f64>, K: Trig>(a: V, b: V, t: f64) -> V {
@@ -43,24 +46,26 @@ pub(crate) fn slerp_unit<V: Ops<Scalar = f64>, K: Trig>(a: V, b: V, t: f64) -> V
     let aa = a.dot(a);
     // The part of `b` perpendicular to `a`, `p = n − ((a·n)/(a·a))·a`, from whichever of
     // `n = b ∓ a` is the short vector, so that what remains is the subtraction of a small
-    // correction. `1/(a·a)` is taken as `2 − a·a`: callers pass `a` within 4·ε of unit squared
-    // length, where that is exact to 16·ε², and dividing by `a·a` rather than assuming 1 keeps `p`
-    // perpendicular when `a` is one ulp off unit length, which matters when `p` itself is tiny.
+    // correction. Dividing by `a·a` rather than assuming 1 keeps `p` perpendicular to `a` when
+    // `a` is an ulp off unit length, which matters when `n` is mostly radial (equal or opposite
+    // directions, lengths differing by rounding) and `p` is much shorter than `n`.
     let sign = select(cos_theta >= 0.0, 1.0, -1.0);
     let near = b.sub(a.scale(sign));
     // Not `a·b ∓ a·a`: that cancels when n is short, and near θ = π the error would be
     // amplified by 1/sin θ.
     let a_near = a.dot(near);
-    let k = a_near * (2.0 - aa);
+    let k = a_near / aa;
     let along = near.sub(a.scale(k));
-    // |p|² = |n|² − k·(a·n): no cancellation, as |p| ≥ |a·n| whenever n is the short one, and
-    // the square root need not wait for `p`.
-    let sin_theta = (near.dot(near) - k * a_near).sqrt();
+    // |p| from p itself: |n|² − k·(a·n) would cancel when n is mostly radial.
+    let sin_theta = along.dot(along).sqrt();
     // Started now, the division runs in parallel with the trigonometry.
     let inv_sin_theta = 1.0 / sin_theta;
-    if sin_theta == 0.0 {
+    // `p` is zero in exact arithmetic when `n` is radial, i.e. the directions are equal or
+    // opposite and only the lengths differ by rounding; then its computed value is rounding
+    // noise pointing anywhere, of the order of ε·|n|. Below 4·ε·|n| it is treated as zero.
+    if sin_theta <= PARALLEL_TOLERANCE * near.dot(near).sqrt() || sin_theta == 0.0 {
         if cos_theta >= 0.0 {
-            // a == b (or the difference underflows): the arc is a point.
+            // The same direction (or the difference underflows): the arc is a point.
             return a;
         }
         // Exactly opposite: every great circle through a and b is an arc of length π. Take the
@@ -130,7 +135,8 @@ macro_rules! vector_slerp {
         ///
         /// # Special values
         /// - `a == b`: `a` for every `t`.
-        /// - `a == −b` exactly: the arc through the deterministic perpendicular of `a` — the
+        /// - `a` and `b` in opposite directions (to rounding): the arc through the
+        ///   deterministic perpendicular of `a` — the
         ///   counter-clockwise perpendicular in 2D, glam's `any_orthonormal_vector` in 3D,
         ///   `(y, −x, w, −z)` in 4D.
         /// - A zero or non-finite input, or a non-finite `t`: the zero vector (use the `try_`
