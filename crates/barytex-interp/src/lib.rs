@@ -11,6 +11,7 @@
 //! | exact orientation | [`orient2d`], [`Orientation`] |
 //! | barycentric coordinates | [`barycentric_2d`], [`locate_2d`], [`Location`], [`barycentric_3d`], [`methods`] |
 //! | quads and cubes | [`bilinear`], [`inverse_bilinear_2d`], [`inverse_bilinear_3d`], [`trilinear`] |
+//! | convex polygons (generalized barycentric) | [`wachspress_weights`], [`mean_value_weights`], [`GeneralizedBarycentric`], [`interpolate_polygon`], [`PolygonLocation`], [`PolygonError`] |
 //! | projective space | [`Homogeneous3`], [`perspective_correct_weights`], [`perspective_interpolate`] |
 //!
 //! Conventions: f32 on the data path, f64 or exact arithmetic inside predicates and solvers;
@@ -72,6 +73,10 @@ pub use inverse_bilinear::{InverseBilinear, inverse_bilinear_2d, inverse_bilinea
 pub use lerp::{inverse_lerp, lerp, lerp_f64, segment_parameter_2d, segment_parameter_3d};
 pub use orient::{Orientation, orient2d};
 pub use perspective::{perspective_correct_weights, perspective_interpolate};
+pub use polygon::{
+    GeneralizedBarycentric, PolygonError, PolygonLocation, interpolate_polygon, mean_value_weights,
+    wachspress_weights,
+};
 pub use trilinear::trilinear;
 
 /// The alternative methods that trade accuracy for speed, kept public so the speed-vs-error report
