@@ -11,6 +11,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use barytex_testkit::fuzz_inputs::polygon::{check_polygon, polygon_geometry};
 use barytex_testkit::fuzz_inputs::{
     check_inverse_bilinear, check_orient_barycentric, inverse_bilinear_geometry,
     orient_barycentric_geometry,
@@ -109,4 +110,18 @@ fn layout_inverse_bilinear() {
     // Mode 1 with k = −1: p is corner x, one ulp down in x.
     let (p, _) = inverse_bilinear_geometry(&le_words(&words, Some((15 << 3) | 1)));
     assert_eq!(p, Vec2::new(-f32::from_bits(1), 0.0));
+}
+
+#[test]
+fn polygon_regressions() {
+    replay("polygon", check_polygon);
+    // Layout: p, then `c % 9` vertices, mode byte 72, count byte 73.
+    let bits = |x: f32| x.to_bits();
+    let words = [0.5, 0.5, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0].map(bits);
+    let mut bytes = le_words(&words, None);
+    bytes.resize(73, 0);
+    bytes.push(3);
+    let (p, polygon) = polygon_geometry(&bytes);
+    assert_eq!(p, Vec2::splat(0.5));
+    assert_eq!(polygon, [Vec2::ZERO, Vec2::X, Vec2::ONE]);
 }

@@ -12,6 +12,7 @@
 //! | barycentric coordinates | [`barycentric_2d`], [`locate_2d`], [`Location`], [`barycentric_3d`], [`methods`] |
 //! | quads and cubes | [`bilinear`], [`inverse_bilinear_2d`], [`inverse_bilinear_3d`], [`trilinear`] |
 //! | spherical interpolation | [`slerp_vec3`], [`slerp_quat`], [`QuatInterpolation`], [`interpolate_normal`] (module docs of the SLERP family: [`QuatInterpolation`]) |
+//! | convex polygons (generalized barycentric) | [`wachspress_weights`], [`mean_value_weights`], [`GeneralizedBarycentric`], [`interpolate_polygon`], [`PolygonLocation`], [`PolygonError`] |
 //! | projective space | [`Homogeneous3`], [`perspective_correct_weights`], [`perspective_interpolate`] |
 //!
 //! Conventions: f32 on the data path, f64 or exact arithmetic inside predicates and solvers;
@@ -73,6 +74,10 @@ pub use inverse_bilinear::{InverseBilinear, inverse_bilinear_2d, inverse_bilinea
 pub use lerp::{inverse_lerp, lerp, lerp_f64, segment_parameter_2d, segment_parameter_3d};
 pub use orient::{Orientation, orient2d};
 pub use perspective::{perspective_correct_weights, perspective_interpolate};
+pub use polygon::{
+    GeneralizedBarycentric, PolygonError, PolygonLocation, interpolate_polygon, mean_value_weights,
+    wachspress_weights,
+};
 pub use slerp::*;
 pub use trilinear::trilinear;
 

@@ -7,6 +7,8 @@
 //! - [`invariants`]: checks that return `Err(description)` instead of panicking, so property
 //!   tests and fuzz targets assert exactly the same things.
 //! - [`sphere`]: f64 references for the SLERP family (slices, any dimension).
+//! - [`polygon_invariants`]: exact Wachspress references and the generalized-barycentric
+//!   invariant check shared by the polygon property tests and the `polygon` fuzz target.
 //! - [`seeded`]: a seeded generator and input shapes shared by the benchmarks and the report.
 //! - [`ulp`]: distances in units in the last place.
 //! - [`components`]: flatten any interpolable value into `f64` components for comparisons.
@@ -17,6 +19,7 @@ pub mod components;
 pub mod exact;
 pub mod fuzz_inputs;
 pub mod invariants;
+pub mod polygon_invariants;
 pub mod reference;
 pub mod seeded;
 pub mod sphere;

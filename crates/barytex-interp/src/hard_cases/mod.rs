@@ -12,6 +12,7 @@ mod hulls;
 mod polygons;
 mod rotations;
 
+pub use polygons::*;
 pub use rotations::{QuatPairCase, VectorPairCase, quaternion_pairs, vector_pairs};
 
 /// Kettner et al.'s grid ("Classroom examples of robustness problems in geometric
