@@ -19,6 +19,8 @@ use crate::timing::ns_per_call;
 
 type QuatInput = (Quat, Quat, f32);
 type VecInput = (Vec3, Vec3, f32);
+type QuatMethod = fn(Quat, Quat, f32) -> Quat;
+type VecMethod = fn(Vec3, Vec3, f32) -> Vec3;
 
 fn f64s<const N: usize>(v: [f32; N]) -> Vec<f64> {
     v.iter().map(|&x| f64::from(x)).collect()
@@ -122,7 +124,7 @@ fn quaternion_table(settings: Settings) -> Table {
             &mut extra,
         ));
     }
-    let peers: [(&str, fn(Quat, Quat, f32) -> Quat); 4] = [
+    let peers: [(&str, QuatMethod); 4] = [
         ("glam Quat::slerp (peer)", |a, b, t| a.slerp(b, t)),
         ("glam Quat::lerp (peer, nlerp)", |a, b, t| a.lerp(b, t)),
         ("nalgebra try_slerp (peer)", |a, b, t| {
@@ -183,7 +185,7 @@ fn vector_table(settings: Settings) -> Table {
         ..Table::default()
     };
     let mut extra = Vec::new();
-    let methods: [(&str, bool, fn(Vec3, Vec3, f32) -> Vec3); 4] = [
+    let methods: [(&str, bool, VecMethod); 4] = [
         ("slerp_vec3", true, slerp_vec3),
         ("interpolate_normal(Renormalize)", false, |a, b, t| {
             interpolate_normal(a, b, t, NormalInterpolation::Renormalize)
