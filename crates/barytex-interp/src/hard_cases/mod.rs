@@ -12,6 +12,8 @@ mod hulls;
 mod polygons;
 mod rotations;
 
+pub use hulls::{HullCase2d, hull_circle_2d, hulls_2d};
+
 /// Kettner et al.'s grid ("Classroom examples of robustness problems in geometric
 /// computations"): the points `(0.5 + i·ulp, 0.5 + j·ulp)` for `i, j` in `0..n`, tested against
 /// the line through `(12, 12)` and `(24, 24)`. Naive f32 orientation gets thousands of these
