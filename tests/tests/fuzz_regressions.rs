@@ -15,6 +15,7 @@ use barytex_testkit::fuzz_inputs::{
     check_inverse_bilinear, check_orient_barycentric, inverse_bilinear_geometry,
     orient_barycentric_geometry,
 };
+use barytex_testkit::fuzz_inputs::hull2d::{check_hull2d, hull2d_points};
 use glam::Vec2;
 
 fn regressions_dir(target: &str) -> PathBuf {
@@ -104,4 +105,14 @@ fn layout_inverse_bilinear() {
     // Mode 1 with k = −1: p is corner x, one ulp down in x.
     let (p, _) = inverse_bilinear_geometry(&le_words(&words, Some((15 << 3) | 1)));
     assert_eq!(p, Vec2::new(-f32::from_bits(1), 0.0));
+}
+
+#[test]
+fn hull2d_regressions() {
+    replay("hull2d", check_hull2d);
+    // Layout: grid kind (1) at e = 16 (scale 1) reads byte pairs as integer points.
+    assert_eq!(
+        hull2d_points(&[(16 << 3) | 1, 3, 0xfe]),
+        vec![Vec2::new(3.0, -2.0)]
+    );
 }

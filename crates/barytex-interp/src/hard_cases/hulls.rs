@@ -85,7 +85,7 @@ pub fn hulls_2d() -> Vec<HullCase2d> {
             Vec2::new(t - 1500.0, 2.0 * t + 1.0)
         })
         .collect();
-    let kettner: Vec<Vec2> = kettner_grid(16)
+    let kettner: Vec<Vec2> = kettner_grid(8)
         .map(|(p, _, _)| p)
         .chain([Vec2::new(12.0, 12.0), Vec2::new(24.0, 24.0)])
         .collect();
@@ -112,7 +112,7 @@ pub fn hulls_2d() -> Vec<HullCase2d> {
         case("circle", 4096.0, hull_circle_2d(4096), None),
         case("square grid", 64.0, grid(64, 1.0), Some(4)),
         case("diamond grid", 32.0, diamond, Some(4)),
-        case("subnormal grid", 1e-44, grid(16, f32::from_bits(1)), Some(4)),
+        case("subnormal grid", 1e-44, grid(8, f32::from_bits(1)), Some(4)),
         case("all equal", 0.0, Vec::from([Vec2::new(0.3, -0.7); 1000]), Some(1)),
         case(
             "signed zeros",
@@ -126,7 +126,7 @@ pub fn hulls_2d() -> Vec<HullCase2d> {
             Some(1),
         ),
         case("3000 collinear", 3000.0, collinear, Some(2)),
-        case("Kettner last-ulp grid", 16.0, kettner, None),
+        case("Kettner last-ulp grid", 8.0, kettner, None),
         case("segment rounded to f32", 1000.0, rounded_segment, None),
         case("circle near 1e30", 1e30, circle.iter().map(|&p| p * 1e30).collect(), None),
         case("cloud near 1e38", 3e38, huge_cloud, None),
