@@ -11,6 +11,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use barytex_testkit::fuzz_inputs::hull2d::{check_hull2d, hull2d_points};
 use barytex_testkit::fuzz_inputs::polygon::{check_polygon, polygon_geometry};
 use barytex_testkit::fuzz_inputs::{
     check_inverse_bilinear, check_orient_barycentric, inverse_bilinear_geometry,
@@ -124,4 +125,14 @@ fn polygon_regressions() {
     let (p, polygon) = polygon_geometry(&bytes);
     assert_eq!(p, Vec2::splat(0.5));
     assert_eq!(polygon, [Vec2::ZERO, Vec2::X, Vec2::ONE]);
+}
+
+#[test]
+fn hull2d_regressions() {
+    replay("hull2d", check_hull2d);
+    // Layout: grid kind (1) at e = 16 (scale 1) reads byte pairs as integer points.
+    assert_eq!(
+        hull2d_points(&[(16 << 3) | 1, 3, 0xfe]),
+        vec![Vec2::new(3.0, -2.0)]
+    );
 }

@@ -13,6 +13,7 @@
 //! | quads and cubes | [`bilinear`], [`inverse_bilinear_2d`], [`inverse_bilinear_3d`], [`trilinear`] |
 //! | spherical interpolation | [`slerp_vec3`], [`slerp_quat`], [`QuatInterpolation`], [`interpolate_normal`] (module docs of the SLERP family: [`QuatInterpolation`]) |
 //! | convex polygons (generalized barycentric) | [`wachspress_weights`], [`mean_value_weights`], [`GeneralizedBarycentric`], [`interpolate_polygon`], [`PolygonLocation`], [`PolygonError`] |
+//! | 2D convex hull (exact) | [`convex_hull_2d`], [`ConvexHull2d`], [`CollinearPoints`], [`HullShape2d`], [`HullError2d`], [`HullDefect2d`] |
 //! | projective space | [`Homogeneous3`], [`perspective_correct_weights`], [`perspective_interpolate`] |
 //!
 //! Conventions: f32 on the data path, f64 or exact arithmetic inside predicates and solvers;
@@ -69,6 +70,9 @@ pub use bilinear::bilinear;
 pub use combination::{AffineCombination, ConvexCombination};
 pub use error::InterpError;
 pub use homogeneous::Homogeneous3;
+pub use hull2d::{
+    CollinearPoints, ConvexHull2d, HullDefect2d, HullError2d, HullShape2d, convex_hull_2d,
+};
 pub use interpolate::{Interpolate, interpolate3};
 pub use inverse_bilinear::{InverseBilinear, inverse_bilinear_2d, inverse_bilinear_3d};
 pub use lerp::{inverse_lerp, lerp, lerp_f64, segment_parameter_2d, segment_parameter_3d};

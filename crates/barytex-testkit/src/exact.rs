@@ -182,3 +182,65 @@ mod tests {
         }
     }
 }
+
+/// The exact 2D hull's vertex set by brute force (`O(n³)` rational orientations, for small
+/// inputs): with `keep`, every distinct point on the boundary, else only the strict corners
+/// (for collinear input, the two extreme points). Each point is named by the lowest index of its
+/// coordinates (`-0.0` equals `0.0`); the result is sorted ascending.
+///
+/// A directed pair `(a, b)` of distinct points supports the set when no point is strictly right
+/// of `a → b`; the boundary is every point on a supporting line, and a corner is a boundary
+/// point that is lowest or highest, in (x, y) order, on one of its supporting lines.
+///
+/// # Panics
+/// On NaN or infinite input: callers filter those first.
+#[must_use]
+pub fn convex_hull_2d_vertex_set(points: &[Vec2], keep: bool) -> Vec<usize> {
+    let mut distinct: Vec<(Vec2, usize)> = Vec::new();
+    for (i, &p) in points.iter().enumerate() {
+        if !distinct.iter().any(|&(q, _)| q == p) {
+            distinct.push((p, i));
+        }
+    }
+    if distinct.len() < 2 {
+        return distinct.iter().map(|&(_, i)| i).collect();
+    }
+    let rational: Vec<P2> = distinct.iter().map(|&(p, _)| p2(p)).collect();
+    // Keys have `-0.0` normalised to `0.0`, so `total_cmp` is the exact (x, y) order.
+    let lex = |a: Vec2, b: Vec2| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y));
+    let mut boundary = vec![false; distinct.len()];
+    let mut corner = vec![false; distinct.len()];
+    for a in 0..distinct.len() {
+        for b in 0..distinct.len() {
+            if a == b {
+                continue;
+            }
+            let signs: Vec<i8> = rational
+                .iter()
+                .map(|q| sign(&cross2(&rational[a], &rational[b], q)))
+                .collect();
+            if signs.contains(&-1) {
+                continue;
+            }
+            let on_line: Vec<usize> = (0..distinct.len()).filter(|&q| signs[q] == 0).collect();
+            for &q in &on_line {
+                boundary[q] = true;
+            }
+            let key = |&q: &usize| distinct[q].0 + Vec2::ZERO;
+            let ends = [
+                on_line.iter().copied().min_by(|x, y| lex(key(x), key(y))),
+                on_line.iter().copied().max_by(|x, y| lex(key(x), key(y))),
+            ];
+            for q in ends.into_iter().flatten() {
+                corner[q] = true;
+            }
+        }
+    }
+    let chosen = if keep { &boundary } else { &corner };
+    let mut out: Vec<usize> = (0..distinct.len())
+        .filter(|&q| chosen[q])
+        .map(|q| distinct[q].1)
+        .collect();
+    out.sort_unstable();
+    out
+}

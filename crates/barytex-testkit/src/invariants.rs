@@ -187,3 +187,71 @@ pub fn check_inverse_bilinear_2d(p: Vec2, quad: [Vec2; 4]) -> Result<(), String>
 pub fn inverse_bilinear_error(ab: Vec2, reference: DVec2) -> f64 {
     (ab.as_dvec2() - reference).abs().max_element()
 }
+
+/// Inputs up to this many points are also compared against the brute-force exact hull
+/// ([`exact::convex_hull_2d_vertex_set`]) by [`check_convex_hull_2d`].
+pub const HULL_2D_BRUTE_FORCE_MAX: usize = 16;
+
+/// `convex_hull_2d` under both policies: the typed error naming the first non-finite point;
+/// otherwise both hulls pass [`ConvexHull2d::validate`](barytex_interp::ConvexHull2d::validate)
+/// (exact: counter-clockwise from the lowest point, convex, every point inside or on the
+/// boundary, policy respected, lowest index of duplicates), agree on the shape, the `Drop` hull is
+/// the `Keep` hull without its straight-ahead vertices (same order), and, for at most
+/// [`HULL_2D_BRUTE_FORCE_MAX`] points, both vertex sets equal the brute-force exact ones.
+///
+/// # Errors
+/// A description of the violated invariant.
+pub fn check_convex_hull_2d(points: &[Vec2]) -> Result<(), String> {
+    use barytex_interp::{CollinearPoints, HullError2d, convex_hull_2d};
+    let drop = convex_hull_2d(points, CollinearPoints::Drop);
+    let keep = convex_hull_2d(points, CollinearPoints::Keep);
+    if let Some(index) = points.iter().position(|p| !p.is_finite()) {
+        let want = Some(HullError2d::NonFinite { index });
+        if drop.as_ref().err().copied() != want || keep.as_ref().err().copied() != want {
+            return Err(format!(
+                "non-finite point {index}: Drop gave {drop:?}, Keep gave {keep:?}"
+            ));
+        }
+        return Ok(());
+    }
+    let drop = drop.map_err(|e| format!("Drop: unexpected error {e}"))?;
+    let keep = keep.map_err(|e| format!("Keep: unexpected error {e}"))?;
+    drop.validate(points)
+        .map_err(|d| format!("Drop hull {:?} invalid: {d}", drop.vertices()))?;
+    keep.validate(points)
+        .map_err(|d| format!("Keep hull {:?} invalid: {d}", keep.vertices()))?;
+    if drop.shape() != keep.shape() {
+        return Err(format!(
+            "shapes differ: Drop {:?}, Keep {:?}",
+            drop.shape(),
+            keep.shape()
+        ));
+    }
+    let filtered: Vec<usize> = keep
+        .vertices()
+        .iter()
+        .copied()
+        .filter(|i| drop.vertices().contains(i))
+        .collect();
+    if filtered != drop.vertices() {
+        return Err(format!(
+            "Drop hull {:?} is not Keep hull {:?} without its straight-ahead vertices",
+            drop.vertices(),
+            keep.vertices()
+        ));
+    }
+    if points.len() <= HULL_2D_BRUTE_FORCE_MAX {
+        for (hull, keep_policy) in [(&drop, false), (&keep, true)] {
+            let mut got = hull.vertices().to_vec();
+            got.sort_unstable();
+            let want = exact::convex_hull_2d_vertex_set(points, keep_policy);
+            if got != want {
+                return Err(format!(
+                    "{:?} vertex set {got:?}, brute-force exact {want:?}",
+                    hull.collinear()
+                ));
+            }
+        }
+    }
+    Ok(())
+}

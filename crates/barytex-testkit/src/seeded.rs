@@ -111,3 +111,16 @@ pub fn convex_quad(rng: &mut XorShift) -> [Vec2; 4] {
         }
     }
 }
+
+/// `n` points uniform in `[-1, 1)²` (the hull benchmarks' and report's "uniform square").
+pub fn points_in_square(rng: &mut XorShift, n: usize) -> Vec<Vec2> {
+    (0..n).map(|_| rng.vec2_in(-1.0, 1.0)).collect()
+}
+
+/// `n` points on the unit circle in scrambled order
+/// ([`barytex_interp::hard_cases::hull_circle_2d`]): every point is near the hull, so nothing
+/// can be filtered away.
+#[must_use]
+pub fn points_on_circle(n: usize) -> Vec<Vec2> {
+    barytex_interp::hard_cases::hull_circle_2d(n)
+}

@@ -12,6 +12,7 @@ mod hulls;
 mod polygons;
 mod rotations;
 
+pub use hulls::{HullCase2d, hull_circle_2d, hulls_2d};
 pub use polygons::*;
 pub use rotations::{QuatPairCase, VectorPairCase, quaternion_pairs, vector_pairs};
 
