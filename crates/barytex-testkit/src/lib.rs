@@ -5,7 +5,8 @@
 //! - [`exact`]: exact-rational reference implementations (every finite float is a rational).
 //! - [`reference`](mod@reference): f64 reference implementations where exact ones are impractical.
 //! - [`invariants`]: checks that return `Err(description)` instead of panicking, so property
-//!   tests and fuzz targets assert exactly the same things.
+//!   tests and fuzz targets assert exactly the same things; [`invariants_3d`] does the same for
+//!   `orient3d` and the 3D convex hull.
 //! - [`seeded`]: a seeded generator and input shapes shared by the benchmarks and the report.
 //! - [`ulp`]: distances in units in the last place.
 //! - [`components`]: flatten any interpolable value into `f64` components for comparisons.
@@ -16,6 +17,7 @@ pub mod components;
 pub mod exact;
 pub mod fuzz_inputs;
 pub mod invariants;
+pub mod invariants_3d;
 pub mod reference;
 pub mod seeded;
 pub mod strategies;
