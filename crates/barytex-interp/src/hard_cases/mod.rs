@@ -9,8 +9,11 @@ use glam::{Vec2, Vec3};
 use crate::Location;
 
 mod hulls;
+mod hulls_3d;
 mod polygons;
 mod rotations;
+
+pub use hulls_3d::*;
 
 /// Kettner et al.'s grid ("Classroom examples of robustness problems in geometric
 /// computations"): the points `(0.5 + i·ulp, 0.5 + j·ulp)` for `i, j` in `0..n`, tested against
