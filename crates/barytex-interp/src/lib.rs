@@ -9,6 +9,8 @@
 //! | linear interpolation | [`lerp`], [`lerp_f64`], [`inverse_lerp`], [`segment_parameter_2d`], [`segment_parameter_3d`] |
 //! | checked weights | [`AffineCombination`], [`ConvexCombination`] |
 //! | exact orientation | [`orient2d`], [`Orientation`] |
+//! | exact 3D orientation | [`orient3d`] |
+//! | 3D convex hull | [`convex_hull_3d`], [`ConvexHull3d`], [`Hull3dError`], [`Hull3dDefect`] |
 //! | barycentric coordinates | [`barycentric_2d`], [`locate_2d`], [`Location`], [`barycentric_3d`], [`methods`] |
 //! | quads and cubes | [`bilinear`], [`inverse_bilinear_2d`], [`inverse_bilinear_3d`], [`trilinear`] |
 //! | spherical interpolation | [`slerp_vec3`], [`slerp_quat`], [`QuatInterpolation`], [`interpolate_normal`] (module docs of the SLERP family: [`QuatInterpolation`]) |
@@ -73,10 +75,12 @@ pub use homogeneous::Homogeneous3;
 pub use hull2d::{
     CollinearPoints, ConvexHull2d, HullDefect2d, HullError2d, HullShape2d, convex_hull_2d,
 };
+pub use hull3d::{ConvexHull3d, Hull3dDefect, Hull3dError, convex_hull_3d};
 pub use interpolate::{Interpolate, interpolate3};
 pub use inverse_bilinear::{InverseBilinear, inverse_bilinear_2d, inverse_bilinear_3d};
 pub use lerp::{inverse_lerp, lerp, lerp_f64, segment_parameter_2d, segment_parameter_3d};
 pub use orient::{Orientation, orient2d};
+pub use orient3d::orient3d;
 pub use perspective::{perspective_correct_weights, perspective_interpolate};
 pub use polygon::{
     GeneralizedBarycentric, PolygonError, PolygonLocation, interpolate_polygon, mean_value_weights,
@@ -97,4 +101,5 @@ pub mod methods {
         PrecomputedTriangle3, barycentric_3d_cramer_f32, barycentric_3d_cross_f32,
     };
     pub use crate::orient::methods::{orient2d_dop_f32, orient2d_naive_f32};
+    pub use crate::orient3d::methods::orient3d_naive_f64;
 }

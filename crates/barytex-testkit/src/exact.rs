@@ -123,6 +123,26 @@ fn dot3(a: &P3, b: &P3) -> Q {
     &a[0] * &b[0] + &a[1] * &b[1] + &a[2] * &b[2]
 }
 
+/// The exact determinant `det[b − a, c − a, d − a] = ((b − a) × (c − a)) · (d − a)`
+/// (the sign convention of `barytex_interp::orient3d`).
+///
+/// # Panics
+/// On NaN or infinite input: callers filter those first.
+#[must_use]
+pub fn orient3d_det(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> Q {
+    let [a, b, c, d] = [a, b, c, d].map(p3);
+    dot3(&cross3(&sub3(&b, &a), &sub3(&c, &a)), &sub3(&d, &a))
+}
+
+/// The exact sign of `det[b − a, c − a, d − a]`: 1, −1 or 0.
+///
+/// # Panics
+/// On NaN or infinite input: callers filter those first.
+#[must_use]
+pub fn orient3d_sign(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> i8 {
+    sign(&orient3d_det(a, b, c, d))
+}
+
 /// Exact barycentric weights of the orthogonal projection of `p` onto the plane of `tri`;
 /// `None` for collinear vertices.
 #[must_use]

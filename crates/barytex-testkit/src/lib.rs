@@ -5,7 +5,8 @@
 //! - [`exact`]: exact-rational reference implementations (every finite float is a rational).
 //! - [`reference`](mod@reference): f64 reference implementations where exact ones are impractical.
 //! - [`invariants`]: checks that return `Err(description)` instead of panicking, so property
-//!   tests and fuzz targets assert exactly the same things.
+//!   tests and fuzz targets assert exactly the same things; [`invariants_3d`] does the same for
+//!   `orient3d` and the 3D convex hull.
 //! - [`sphere`]: f64 references for the SLERP family (slices, any dimension).
 //! - [`polygon_invariants`]: exact Wachspress references and the generalized-barycentric
 //!   invariant check shared by the polygon property tests and the `polygon` fuzz target.
@@ -19,6 +20,7 @@ pub mod components;
 pub mod exact;
 pub mod fuzz_inputs;
 pub mod invariants;
+pub mod invariants_3d;
 pub mod polygon_invariants;
 pub mod reference;
 pub mod seeded;

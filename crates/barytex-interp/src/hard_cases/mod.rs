@@ -9,10 +9,12 @@ use glam::{Vec2, Vec3};
 use crate::Location;
 
 mod hulls;
+mod hulls_3d;
 mod polygons;
 mod rotations;
 
 pub use hulls::{HullCase2d, hull_circle_2d, hulls_2d};
+pub use hulls_3d::*;
 pub use polygons::*;
 pub use rotations::{QuatPairCase, VectorPairCase, quaternion_pairs, vector_pairs};
 
