@@ -214,13 +214,13 @@ pub(super) fn validate(hull: &ConvexHull2d, points: &[Vec2]) -> Result<(), HullD
         HullShape2d::Polygon if vertices.len() < 3 => return count_error,
         _ => {}
     }
-    if let (Some(&first), Some(&(_, expected))) = (vertices.first(), sorted.first()) {
-        if first != expected {
-            return Err(HullDefect2d::WrongStart {
-                found: first,
-                expected,
-            });
-        }
+    if let (Some(&first), Some(&(_, expected))) = (vertices.first(), sorted.first())
+        && first != expected
+    {
+        return Err(HullDefect2d::WrongStart {
+            found: first,
+            expected,
+        });
     }
     let positions: Vec<Vec2> = hull.positions(points).collect();
     match actual {
