@@ -31,7 +31,7 @@ fn normalized_lerp(a: Vec4, b: Vec4, t: f32) -> Quat {
 /// Unit inputs are assumed (not checked); a non-finite input gives the zero quaternion. Never NaN.
 ///
 /// # Accuracy
-/// 4D angle to the exact SLERP within [`QuatInterpolation::Nlerp`]'s
+/// 4D angle to the exact SLERP within [`QuatInterpolation::Nlerp`](super::QuatInterpolation::Nlerp)'s
 /// [`angle_bound`](super::QuatInterpolation::angle_bound) (7.1e-2 rad: the speed error at
 /// θ = 90°, `t = ¼`), length within 2.4e-7 of 1 (test `approximation_bounds` in `tests/slerp.rs`).
 ///
@@ -85,7 +85,7 @@ pub(crate) fn corrected_t(t: f32, d: f32, correction: Correction) -> f32 {
 /// Unit inputs are assumed (not checked); a non-finite input gives the zero quaternion. Never NaN.
 ///
 /// # Accuracy
-/// 4D angle to the exact SLERP within the `angle_bound` of [`QuatInterpolation::NlerpCorrected`]
+/// 4D angle to the exact SLERP within the `angle_bound` of [`QuatInterpolation::NlerpCorrected`](super::QuatInterpolation::NlerpCorrected)
 /// (5.4e-3 rad fast, 5.0e-4 precise) for `t` in `[0, 1]`, length within 2.4e-7 of 1 (test
 /// `approximation_bounds` in `tests/slerp.rs`).
 ///
