@@ -109,7 +109,10 @@ impl fmt::Display for PolygonError {
             ),
             Self::NonFinite { what } => write!(f, "{what} has a NaN or infinite coordinate"),
             Self::RepeatedVertex { index } => {
-                write!(f, "vertex {index} equals the next vertex (zero-length edge)")
+                write!(
+                    f,
+                    "vertex {index} equals the next vertex (zero-length edge)"
+                )
             }
             Self::Collinear => f.write_str("all vertices are collinear (zero area)"),
             Self::NotConvex { vertex } => write!(f, "polygon is not convex at vertex {vertex}"),

@@ -6,8 +6,8 @@
 
 use barytex_interp::hard_cases::polygons;
 use barytex_interp::{
-    GeneralizedBarycentric, PolygonError, PolygonLocation, barycentric_2d, interpolate3,
-    interpolate_polygon, mean_value_weights, wachspress_weights,
+    GeneralizedBarycentric, PolygonError, PolygonLocation, barycentric_2d, interpolate_polygon,
+    interpolate3, mean_value_weights, wachspress_weights,
 };
 use barytex_testkit::exact;
 use barytex_testkit::polygon_invariants::{
@@ -295,7 +295,13 @@ fn hard_cases_hold() {
                 continue;
             }
             if let Some(want) = case.expected {
-                assert_eq!(got, Ok(want), "{} ({}) {method:?}", case.name, case.parameter);
+                assert_eq!(
+                    got,
+                    Ok(want),
+                    "{} ({}) {method:?}",
+                    case.name,
+                    case.parameter
+                );
             }
         }
     }
@@ -386,7 +392,11 @@ fn seed_004_split_dependence_is_gone() {
             method.weights(centre, &rotated, &mut w).unwrap();
             let v = interpolate_polygon(&w, &vals).unwrap();
             assert!(v > diagonal_02.min(diagonal_13) && v < diagonal_02.max(diagonal_13));
-            assert_eq!(*reference.get_or_insert(v), v, "{method:?} rotation {shift}");
+            assert_eq!(
+                *reference.get_or_insert(v),
+                v,
+                "{method:?} rotation {shift}"
+            );
         }
     }
 }
@@ -409,7 +419,10 @@ fn invalid_inputs_are_typed_errors() {
             Err(PolygonError::NonFinite { what: "point" })
         );
         let inf = [Vec2::ZERO, Vec2::X, Vec2::new(f32::INFINITY, 1.0)];
-        assert_eq!(run(&inf, p), Err(PolygonError::NonFinite { what: "polygon" }));
+        assert_eq!(
+            run(&inf, p),
+            Err(PolygonError::NonFinite { what: "polygon" })
+        );
         let repeated = [Vec2::ZERO, Vec2::X, Vec2::X, Vec2::Y];
         assert_eq!(
             run(&repeated, p),
@@ -417,10 +430,18 @@ fn invalid_inputs_are_typed_errors() {
         );
         let collinear = [Vec2::ZERO, Vec2::X, Vec2::new(3.0, 0.0)];
         assert_eq!(run(&collinear, p), Err(PolygonError::Collinear));
-        let dart = [Vec2::ZERO, Vec2::new(2.0, 1.0), Vec2::new(4.0, 0.0), Vec2::new(2.0, 3.0)];
+        let dart = [
+            Vec2::ZERO,
+            Vec2::new(2.0, 1.0),
+            Vec2::new(4.0, 0.0),
+            Vec2::new(2.0, 3.0),
+        ];
         assert_eq!(run(&dart, p), Err(PolygonError::NotConvex { vertex: 1 }));
         let spike = [Vec2::ZERO, Vec2::new(2.0, 0.0), Vec2::X, Vec2::Y];
-        assert!(matches!(run(&spike, p), Err(PolygonError::NotConvex { .. })));
+        assert!(matches!(
+            run(&spike, p),
+            Err(PolygonError::NotConvex { .. })
+        ));
         let pentagram: Vec<Vec2> = (0..5)
             .map(|i| {
                 let a = core::f32::consts::TAU * (2 * i) as f32 / 5.0;
@@ -445,13 +466,22 @@ fn invalid_inputs_are_typed_errors() {
         })
     );
     // A flat vertex: mean value accepts it, Wachspress does not.
-    let flat = [Vec2::ZERO, Vec2::X, Vec2::new(2.0, 0.0), Vec2::new(2.0, 1.0), Vec2::Y];
+    let flat = [
+        Vec2::ZERO,
+        Vec2::X,
+        Vec2::new(2.0, 0.0),
+        Vec2::new(2.0, 1.0),
+        Vec2::Y,
+    ];
     let mut w = [0.0; 5];
     assert_eq!(
         wachspress_weights(p, &flat, &mut w),
         Err(PolygonError::NotConvex { vertex: 1 })
     );
-    assert_eq!(mean_value_weights(p, &flat, &mut w), Ok(PolygonLocation::Inside));
+    assert_eq!(
+        mean_value_weights(p, &flat, &mut w),
+        Ok(PolygonLocation::Inside)
+    );
     assert!(w[1] > 0.0);
 }
 
@@ -461,7 +491,11 @@ fn invalid_inputs_are_typed_errors() {
 #[test]
 fn large_polygons_take_the_second_pass() {
     let poly = barytex_interp::hard_cases::regular_polygon(40);
-    for p in [Vec2::new(0.1, 0.2), Vec2::new(0.99, 0.0), Vec2::new(2.0, 1.0)] {
+    for p in [
+        Vec2::new(0.1, 0.2),
+        Vec2::new(0.99, 0.0),
+        Vec2::new(2.0, 1.0),
+    ] {
         check_polygon_all(p, &poly).unwrap();
     }
 }

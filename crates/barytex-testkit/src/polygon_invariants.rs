@@ -138,9 +138,8 @@ pub fn exact_wachspress(p: Vec2, polygon: &[Vec2]) -> Option<(Vec<Q>, f64)> {
     let areas: Vec<Q> = (0..n)
         .map(|i| exact::orient2d_det(p, polygon[i], polygon[(i + 1) % n]))
         .collect();
-    let corner = |i: usize| {
-        exact::orient2d_det(polygon[(i + n - 1) % n], polygon[i], polygon[(i + 1) % n])
-    };
+    let corner =
+        |i: usize| exact::orient2d_det(polygon[(i + n - 1) % n], polygon[i], polygon[(i + 1) % n]);
     let raw: Vec<Q> = if areas.iter().all(|a| !a.is_zero()) {
         (0..n)
             .map(|i| corner(i) / (&areas[(i + n - 1) % n] * &areas[i]))
@@ -172,7 +171,10 @@ pub fn exact_wachspress(p: Vec2, polygon: &[Vec2]) -> Option<(Vec<Q>, f64)> {
 #[must_use]
 pub fn mean_value_reference_f64(p: Vec2, polygon: &[Vec2]) -> Vec<f64> {
     let n = polygon.len();
-    let d: Vec<DVec2> = polygon.iter().map(|v| v.as_dvec2() - p.as_dvec2()).collect();
+    let d: Vec<DVec2> = polygon
+        .iter()
+        .map(|v| v.as_dvec2() - p.as_dvec2())
+        .collect();
     let tans: Vec<f64> = (0..n)
         .map(|i| {
             let (a, b) = (d[i], d[(i + 1) % n]);
@@ -190,7 +192,10 @@ pub fn mean_value_reference_f64(p: Vec2, polygon: &[Vec2]) -> Vec<f64> {
 #[must_use]
 pub fn mean_value_cancellation(p: Vec2, polygon: &[Vec2]) -> f64 {
     let n = polygon.len();
-    let d: Vec<DVec2> = polygon.iter().map(|v| v.as_dvec2() - p.as_dvec2()).collect();
+    let d: Vec<DVec2> = polygon
+        .iter()
+        .map(|v| v.as_dvec2() - p.as_dvec2())
+        .collect();
     let tans: Vec<f64> = (0..n)
         .map(|i| {
             let (a, b) = (d[i], d[(i + 1) % n]);
@@ -272,9 +277,10 @@ pub fn check_polygon_coordinates(
     }
     match location {
         PolygonLocation::OnVertex(i) => {
-            let ok = weights.iter().enumerate().all(|(j, w)| {
-                w.to_bits() == if i == j { 1.0f32.to_bits() } else { 0 }
-            });
+            let ok = weights
+                .iter()
+                .enumerate()
+                .all(|(j, w)| w.to_bits() == if i == j { 1.0f32.to_bits() } else { 0 });
             return if ok {
                 Ok(())
             } else {
@@ -338,7 +344,10 @@ pub fn check_polygon_coordinates(
     }
     if method == GeneralizedBarycentric::Wachspress {
         let Some((exact_weights, kappa)) = exact_wachspress(p, polygon) else {
-            return Err(format!("{}: Ok at a pole of the exact functions", context()));
+            return Err(format!(
+                "{}: Ok at a pole of the exact functions",
+                context()
+            ));
         };
         for (i, (w, e)) in weights.iter().zip(&exact_weights).enumerate() {
             let e64 = exact::to_f64(e);
@@ -399,8 +408,7 @@ pub fn check_rotation_invariance(
                     PolygonLocation::OnVertex(i) => PolygonLocation::OnVertex(unshift(i)),
                     other => other,
                 };
-                a == b
-                    && (0..n).all(|i| weights[i].to_bits() == base[unshift(i)].to_bits())
+                a == b && (0..n).all(|i| weights[i].to_bits() == base[unshift(i)].to_bits())
             }
             // Which vertex an error names depends on where the scan starts.
             (Err(a), Err(b)) => core::mem::discriminant(&a) == core::mem::discriminant(&b),

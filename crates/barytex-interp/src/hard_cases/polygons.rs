@@ -125,7 +125,14 @@ pub fn polygons() -> impl Iterator<Item = PolygonCase> {
         cases.push(case(
             "nearly collinear consecutive vertices",
             k,
-            [v(0.0, 0.0), v(1.0, -k), v(2.0, 0.0), v(2.0, 1.0), v(0.0, 1.0)].to_vec(),
+            [
+                v(0.0, 0.0),
+                v(1.0, -k),
+                v(2.0, 0.0),
+                v(2.0, 1.0),
+                v(0.0, 1.0),
+            ]
+            .to_vec(),
             v(1.0, 0.5),
             inside,
         ));
@@ -134,7 +141,14 @@ pub fn polygons() -> impl Iterator<Item = PolygonCase> {
     cases.push(case(
         "nearly collinear, one ulp",
         0.0,
-        [v(0.0, 0.5), v(0.5, mid_up), v(1.0, 0.5), v(1.0, 1.0), v(0.0, 1.0)].to_vec(),
+        [
+            v(0.0, 0.5),
+            v(0.5, mid_up),
+            v(1.0, 0.5),
+            v(1.0, 1.0),
+            v(0.0, 1.0),
+        ]
+        .to_vec(),
         v(0.5, 0.75),
         inside,
     ));
@@ -210,7 +224,13 @@ pub fn polygons() -> impl Iterator<Item = PolygonCase> {
     cases.push(case(
         "huge",
         1e38,
-        [v(-3e38, -3e38), v(3e38, -3e38), v(3e38, 3e38), v(-3e38, 3e38)].to_vec(),
+        [
+            v(-3e38, -3e38),
+            v(3e38, -3e38),
+            v(3e38, 3e38),
+            v(-3e38, 3e38),
+        ]
+        .to_vec(),
         v(1e37, -2e38),
         inside,
     ));
@@ -252,7 +272,14 @@ pub fn polygons() -> impl Iterator<Item = PolygonCase> {
     cases.push(PolygonCase {
         name: "flat vertex (mean value only)",
         parameter: 0.0,
-        polygon: [v(0.0, 0.0), v(1.0, 0.0), v(2.0, 0.0), v(2.0, 1.0), v(0.0, 1.0)].to_vec(),
+        polygon: [
+            v(0.0, 0.0),
+            v(1.0, 0.0),
+            v(2.0, 0.0),
+            v(2.0, 1.0),
+            v(0.0, 1.0),
+        ]
+        .to_vec(),
         point: v(0.5, 0.0),
         expected: Some(PolygonLocation::OnEdge(0)),
         strictly_convex: false,
@@ -260,7 +287,14 @@ pub fn polygons() -> impl Iterator<Item = PolygonCase> {
     cases.push(PolygonCase {
         name: "flat vertex, inside (mean value only)",
         parameter: 0.0,
-        polygon: [v(0.0, 0.0), v(1.0, 0.0), v(2.0, 0.0), v(2.0, 1.0), v(0.0, 1.0)].to_vec(),
+        polygon: [
+            v(0.0, 0.0),
+            v(1.0, 0.0),
+            v(2.0, 0.0),
+            v(2.0, 1.0),
+            v(0.0, 1.0),
+        ]
+        .to_vec(),
         point: v(1.0, 1e-7),
         expected: inside,
         strictly_convex: false,

@@ -50,7 +50,9 @@ pub fn polygon_geometry(bytes: &[u8]) -> (Vec2, Vec<Vec2>) {
         let q = polygon
             .iter()
             .zip(&w)
-            .fold(glam::DVec2::ZERO, |acc, (v, wi)| acc + v.as_dvec2() * (wi / total));
+            .fold(glam::DVec2::ZERO, |acc, (v, wi)| {
+                acc + v.as_dvec2() * (wi / total)
+            });
         q.as_vec2()
     };
     match kind {
