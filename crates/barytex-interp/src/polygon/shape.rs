@@ -198,8 +198,7 @@ pub(super) fn normalise(
     let mut cache = [0.0f64; STACK];
     let cached = n <= STACK;
     let mut sum = 0.0;
-    for k in 0..n {
-        let i = (shape.start + k) % n;
+    for i in (shape.start..n).chain(0..shape.start) {
         let wi = w(i);
         if cached {
             cache[i] = wi;
