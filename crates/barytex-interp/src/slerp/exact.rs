@@ -57,13 +57,13 @@ pub(crate) fn slerp_unit<V: Ops<Scalar = f64>, K: Trig>(a: V, b: V, t: f64) -> V
     let k = a_near / aa;
     let along = near.sub(a.scale(k));
     // |p| from p itself: |n|² − k·(a·n) would cancel when n is mostly radial.
-    let sin_theta = along.dot(along).sqrt();
+    let sin_theta = crate::math::sqrt(along.dot(along));
     // Started now, the division runs in parallel with the trigonometry.
     let inv_sin_theta = 1.0 / sin_theta;
     // `p` is zero in exact arithmetic when `n` is radial, i.e. the directions are equal or
     // opposite and only the lengths differ by rounding; then its computed value is rounding
     // noise pointing anywhere, of the order of ε·|n|. Below 4·ε·|n| it is treated as zero.
-    if sin_theta <= PARALLEL_TOLERANCE * near.dot(near).sqrt() || sin_theta == 0.0 {
+    if sin_theta <= PARALLEL_TOLERANCE * crate::math::sqrt(near.dot(near)) || sin_theta == 0.0 {
         if cos_theta >= 0.0 {
             // The same direction (or the difference underflows): the arc is a point.
             return a;
