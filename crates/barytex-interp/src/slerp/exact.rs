@@ -43,7 +43,8 @@ const PARALLEL_TOLERANCE: f64 = 4.0 * f64::EPSILON;
 #[inline]
 pub(crate) fn slerp_unit<V: Ops<Scalar = f64>, K: Trig>(a: V, b: V, t: f64) -> V {
     let cos_theta = a.dot(b);
-    let aa = a.dot(a);
+    // Off the critical path: computed while a·b is.
+    let inv_aa = 1.0 / a.dot(a);
     // The part of `b` perpendicular to `a`, `p = n − ((a·n)/(a·a))·a`, from whichever of
     // `n = b ∓ a` is the short vector, so that what remains is the subtraction of a small
     // correction. Dividing by `a·a` rather than assuming 1 keeps `p` perpendicular to `a` when
@@ -54,16 +55,24 @@ pub(crate) fn slerp_unit<V: Ops<Scalar = f64>, K: Trig>(a: V, b: V, t: f64) -> V
     // Not `a·b ∓ a·a`: that cancels when n is short, and near θ = π the error would be
     // amplified by 1/sin θ.
     let a_near = a.dot(near);
-    let k = a_near / aa;
+    let near2 = near.dot(near);
+    let k = a_near * inv_aa;
     let along = near.sub(a.scale(k));
-    // |p| from p itself: |n|² − k·(a·n) would cancel when n is mostly radial.
-    let sin_theta = crate::math::sqrt(along.dot(along));
+    // |p|² = |n|² − k·(a·n) lets the square root start before `p` exists. For unit `a`, `b` and
+    // the short `n`, |p|² ≥ |n|²/2, so the subtraction loses at most one bit; below |n|²/4 `n`
+    // has a radial part (lengths differing by rounding), the formula may cancel, and |p|² is
+    // taken from `p` itself. That branch is rare, hence predictable.
+    let mut p2 = near2 - k * a_near;
+    if p2 < 0.25 * near2 {
+        p2 = along.dot(along);
+    }
+    let sin_theta = crate::math::sqrt(p2);
     // Started now, the division runs in parallel with the trigonometry.
     let inv_sin_theta = 1.0 / sin_theta;
     // `p` is zero in exact arithmetic when `n` is radial, i.e. the directions are equal or
     // opposite and only the lengths differ by rounding; then its computed value is rounding
     // noise pointing anywhere, of the order of ε·|n|. Below 4·ε·|n| it is treated as zero.
-    if sin_theta <= PARALLEL_TOLERANCE * crate::math::sqrt(near.dot(near)) || sin_theta == 0.0 {
+    if sin_theta <= PARALLEL_TOLERANCE * crate::math::sqrt(near2) || sin_theta == 0.0 {
         if cos_theta >= 0.0 {
             // The same direction (or the difference underflows): the arc is a point.
             return a;
