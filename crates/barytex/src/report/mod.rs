@@ -6,6 +6,7 @@
 
 mod barycentric_2d;
 mod barycentric_3d;
+mod hull;
 mod inverse_bilinear;
 mod orientation;
 mod table;
@@ -70,11 +71,12 @@ impl Settings {
 pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     let settings = Settings::new(options.quick);
     type Family = fn(Settings, &mut dyn FnMut(&str)) -> Section;
-    let families: [(&str, Family); 4] = [
+    let families: [(&str, Family); 5] = [
         ("2D barycentric", barycentric_2d::run),
         ("3D barycentric", barycentric_3d::run),
         ("orientation", orientation::run),
         ("inverse bilinear", inverse_bilinear::run),
+        ("2D convex hull", hull::run),
     ];
     let count = families.len();
     let mut sections = Vec::with_capacity(count);
