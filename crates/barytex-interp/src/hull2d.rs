@@ -248,7 +248,10 @@ fn pops(a: Vec2, b: Vec2, c: Vec2, collinear: CollinearPoints) -> bool {
 
 /// The hull of at least two distinct points, sorted by key (lowest index first among equal keys,
 /// duplicates removed).
-fn hull_of_sorted(sorted: &[(Key, usize)], collinear: CollinearPoints) -> (Vec<usize>, HullShape2d) {
+fn hull_of_sorted(
+    sorted: &[(Key, usize)],
+    collinear: CollinearPoints,
+) -> (Vec<usize>, HullShape2d) {
     let (first, last) = (point_of(sorted[0].0), point_of(sorted[sorted.len() - 1].0));
     let all_collinear = sorted
         .iter()
@@ -271,7 +274,12 @@ fn monotone_chain(sorted: &[(Key, usize)], collinear: CollinearPoints) -> Vec<us
     let push = |chain: &mut Vec<(Vec2, usize)>, floor: usize, (k, i): (Key, usize)| {
         let p = point_of(k);
         while chain.len() >= floor + 2
-            && pops(chain[chain.len() - 2].0, chain[chain.len() - 1].0, p, collinear)
+            && pops(
+                chain[chain.len() - 2].0,
+                chain[chain.len() - 1].0,
+                p,
+                collinear,
+            )
         {
             chain.pop();
         }

@@ -202,7 +202,10 @@ fn hard_cases_are_exact() {
         // The brute force is O(m³) in the m distinct points: run it where that is quick.
         if distinct(points) <= 80 {
             compared += 1;
-            for (policy, keep) in [(CollinearPoints::Drop, false), (CollinearPoints::Keep, true)] {
+            for (policy, keep) in [
+                (CollinearPoints::Drop, false),
+                (CollinearPoints::Keep, true),
+            ] {
                 let (_, got) = hull(points, policy);
                 let want = exact::convex_hull_2d_vertex_set(points, keep);
                 assert_eq!(sorted(got), want, "{name} {policy:?}");
@@ -275,8 +278,14 @@ fn convex_combination_of_hull(points: &[Vec2]) -> Result<(), TestCaseError> {
         let combination = ConvexCombination::new(b.weights)
             .map_err(|e| TestCaseError::fail(format!("{p:?}: weights {:?}: {e}", b.weights)))?;
         let q = combination.apply(tri);
-        let scale = tri.iter().map(|c| c.abs().max_element()).fold(p.abs().max_element(), f32::max);
-        prop_assert!((q - p).abs().max_element() <= 4.0 * f32::EPSILON * scale, "{p:?} → {q:?}");
+        let scale = tri
+            .iter()
+            .map(|c| c.abs().max_element())
+            .fold(p.abs().max_element(), f32::max);
+        prop_assert!(
+            (q - p).abs().max_element() <= 4.0 * f32::EPSILON * scale,
+            "{p:?} → {q:?}"
+        );
     }
     Ok(())
 }
@@ -294,7 +303,10 @@ fn exactly_inside_every_edge(points: &[Vec2]) -> Result<(), TestCaseError> {
         for (k, &a) in v.iter().enumerate() {
             let b = v[(k + 1) % v.len()];
             for &p in points {
-                prop_assert!(exact::orient2d_sign(a, b, p) >= 0, "{p:?} right of {a:?}→{b:?}");
+                prop_assert!(
+                    exact::orient2d_sign(a, b, p) >= 0,
+                    "{p:?} right of {a:?}→{b:?}"
+                );
             }
         }
     }

@@ -167,22 +167,6 @@ pub fn perspective_weights(screen: &[f32], w: &[f32]) -> Option<Vec<Q>> {
     Some(q.iter().map(|qi| qi / &sum).collect())
 }
 
-#[cfg(test)]
-mod tests {
-    #![allow(clippy::unwrap_used)]
-    use super::*;
-
-    #[test]
-    fn seed_example_9_exact() {
-        let tri = [Vec2::ZERO, Vec2::new(2.0, 3.0), Vec2::new(3.0, 1.0)];
-        let w = barycentric_2d(Vec2::new(1.0, 0.0), tri).unwrap();
-        let expect = [(5, 7), (-1, 7), (3, 7)];
-        for (wi, (n, d)) in w.iter().zip(expect) {
-            assert_eq!(*wi, Q::new(BigInt::from(n), BigInt::from(d)));
-        }
-    }
-}
-
 /// The exact 2D hull's vertex set by brute force (`O(n³)` rational orientations, for small
 /// inputs): with `keep`, every distinct point on the boundary, else only the strict corners
 /// (for collinear input, the two extreme points). Each point is named by the lowest index of its
@@ -243,4 +227,20 @@ pub fn convex_hull_2d_vertex_set(points: &[Vec2], keep: bool) -> Vec<usize> {
         .collect();
     out.sort_unstable();
     out
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+
+    #[test]
+    fn seed_example_9_exact() {
+        let tri = [Vec2::ZERO, Vec2::new(2.0, 3.0), Vec2::new(3.0, 1.0)];
+        let w = barycentric_2d(Vec2::new(1.0, 0.0), tri).unwrap();
+        let expect = [(5, 7), (-1, 7), (3, 7)];
+        for (wi, (n, d)) in w.iter().zip(expect) {
+            assert_eq!(*wi, Q::new(BigInt::from(n), BigInt::from(d)));
+        }
+    }
 }

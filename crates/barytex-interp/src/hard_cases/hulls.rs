@@ -113,7 +113,12 @@ pub fn hulls_2d() -> Vec<HullCase2d> {
         case("square grid", 64.0, grid(64, 1.0), Some(4)),
         case("diamond grid", 32.0, diamond, Some(4)),
         case("subnormal grid", 1e-44, grid(8, f32::from_bits(1)), Some(4)),
-        case("all equal", 0.0, Vec::from([Vec2::new(0.3, -0.7); 1000]), Some(1)),
+        case(
+            "all equal",
+            0.0,
+            Vec::from([Vec2::new(0.3, -0.7); 1000]),
+            Some(1),
+        ),
         case(
             "signed zeros",
             0.0,
@@ -128,9 +133,19 @@ pub fn hulls_2d() -> Vec<HullCase2d> {
         case("3000 collinear", 3000.0, collinear, Some(2)),
         case("Kettner last-ulp grid", 8.0, kettner, None),
         case("segment rounded to f32", 1000.0, rounded_segment, None),
-        case("circle near 1e30", 1e30, circle.iter().map(|&p| p * 1e30).collect(), None),
+        case(
+            "circle near 1e30",
+            1e30,
+            circle.iter().map(|&p| p * 1e30).collect(),
+            None,
+        ),
         case("cloud near 1e38", 3e38, huge_cloud, None),
-        case("circle near 1e-30", 1e-30, circle.iter().map(|&p| p * 1e-30).collect(), None),
+        case(
+            "circle near 1e-30",
+            1e-30,
+            circle.iter().map(|&p| p * 1e-30).collect(),
+            None,
+        ),
         case("mixed 1e-30 and 1e30", 1e30, mixed, None),
     ])
 }

@@ -33,7 +33,11 @@ pub(super) fn survivors(points: &[Vec2]) -> Result<Vec<(Key, usize)>, HullError2
     let polygon = filter_polygon(points, extremes);
     if polygon.len() < 3 {
         // The extremes are collinear, so every point is: nothing lies strictly inside.
-        return Ok(points.iter().enumerate().map(|(i, &p)| (key(p), i)).collect());
+        return Ok(points
+            .iter()
+            .enumerate()
+            .map(|(i, &p)| (key(p), i))
+            .collect());
     }
     let inner = inner_box(&polygon, extremes.map(|i| points[i]));
     let mut out = Vec::new();
@@ -80,7 +84,10 @@ fn filter_polygon(points: &[Vec2], extremes: [usize; DIRECTIONS]) -> Vec<Vec2> {
     if corners.len() < 3 {
         return Vec::new();
     }
-    let (first, last) = (super::point_of(corners[0].0), super::point_of(corners[corners.len() - 1].0));
+    let (first, last) = (
+        super::point_of(corners[0].0),
+        super::point_of(corners[corners.len() - 1].0),
+    );
     if corners
         .iter()
         .all(|&(k, _)| orient2d_sign_det(first, last, super::point_of(k)) == 0.0)
@@ -127,8 +134,14 @@ impl InnerBox {
 /// times before giving up (the filter then tests the polygon alone).
 fn inner_box(polygon: &[Vec2], e: [Vec2; DIRECTIONS]) -> Option<InnerBox> {
     // e: [E, NE, N, NW, W, SW, S, SE].
-    let mut min = Vec2::new(e[3].x.max(e[4].x).max(e[5].x), e[5].y.max(e[6].y).max(e[7].y));
-    let mut max = Vec2::new(e[7].x.min(e[0].x).min(e[1].x), e[1].y.min(e[2].y).min(e[3].y));
+    let mut min = Vec2::new(
+        e[3].x.max(e[4].x).max(e[5].x),
+        e[5].y.max(e[6].y).max(e[7].y),
+    );
+    let mut max = Vec2::new(
+        e[7].x.min(e[0].x).min(e[1].x),
+        e[1].y.min(e[2].y).min(e[3].y),
+    );
     for _ in 0..4 {
         if !(min.x < max.x && min.y < max.y) {
             return None;

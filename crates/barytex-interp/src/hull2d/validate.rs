@@ -102,7 +102,10 @@ impl fmt::Display for HullDefect2d {
                 write!(f, "vertex {position} is index {index}, beyond the input")
             }
             Self::RepeatedPoint { position } => {
-                write!(f, "vertex {position} repeats an earlier vertex's coordinates")
+                write!(
+                    f,
+                    "vertex {position} repeats an earlier vertex's coordinates"
+                )
             }
             Self::NotLowestIndex {
                 position,
@@ -119,10 +122,16 @@ impl fmt::Display for HullDefect2d {
                 write!(f, "{count} vertices are impossible for a {shape:?} hull")
             }
             Self::WrongStart { found, expected } => {
-                write!(f, "hull starts at {found}, not at the lowest point {expected}")
+                write!(
+                    f,
+                    "hull starts at {found}, not at the lowest point {expected}"
+                )
             }
             Self::NotConvex { position } => {
-                write!(f, "the turn at vertex {position} breaks convexity or the policy")
+                write!(
+                    f,
+                    "the turn at vertex {position} breaks convexity or the policy"
+                )
             }
             Self::OutOfOrder { position } => {
                 write!(f, "segment vertex {position} is out of order")
@@ -151,7 +160,11 @@ pub(super) fn validate(hull: &ConvexHull2d, points: &[Vec2]) -> Result<(), HullD
         return Err(HullDefect2d::NonFiniteInput { index });
     }
     // Every point once per distinct coordinates, lowest index first.
-    let mut sorted: Vec<(Key, usize)> = points.iter().enumerate().map(|(i, &p)| (key(p), i)).collect();
+    let mut sorted: Vec<(Key, usize)> = points
+        .iter()
+        .enumerate()
+        .map(|(i, &p)| (key(p), i))
+        .collect();
     sorted.sort_unstable();
     sorted.dedup_by_key(|e| e.0);
     let lowest_of = |k: Key| {
@@ -201,13 +214,13 @@ pub(super) fn validate(hull: &ConvexHull2d, points: &[Vec2]) -> Result<(), HullD
         HullShape2d::Polygon if vertices.len() < 3 => return count_error,
         _ => {}
     }
-    if let (Some(&first), Some(&(_, expected))) = (vertices.first(), sorted.first()) {
-        if first != expected {
-            return Err(HullDefect2d::WrongStart {
-                found: first,
-                expected,
-            });
-        }
+    if let (Some(&first), Some(&(_, expected))) = (vertices.first(), sorted.first())
+        && first != expected
+    {
+        return Err(HullDefect2d::WrongStart {
+            found: first,
+            expected,
+        });
     }
     let positions: Vec<Vec2> = hull.positions(points).collect();
     match actual {
@@ -272,9 +285,8 @@ fn check_polygon(
         let b = positions[position];
         let c = positions[(position + 1) % n];
         let det = orient2d_sign_det(a, b, c);
-        let straight_ahead = det == 0.0
-            && step(a.x, b.x) == step(b.x, c.x)
-            && step(a.y, b.y) == step(b.y, c.y);
+        let straight_ahead =
+            det == 0.0 && step(a.x, b.x) == step(b.x, c.x) && step(a.y, b.y) == step(b.y, c.y);
         if det > 0.0 {
             corners.push(b);
         } else if !(keep && straight_ahead) {

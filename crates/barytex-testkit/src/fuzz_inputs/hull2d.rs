@@ -130,7 +130,9 @@ mod tests {
         );
         assert!(check_hull2d(&grid).is_ok());
         let code = hull2d_code(&grid);
-        assert!(code.contains("Vec2::new(f32::from_bits(0x3f800000), f32::from_bits(0x40000000)), // (1.0, 2.0)"));
+        assert!(code.contains(
+            "Vec2::new(f32::from_bits(0x3f800000), f32::from_bits(0x40000000)), // (1.0, 2.0)"
+        ));
         assert!(code.contains("check_convex_hull_2d(&points).unwrap();"));
         // Exact line plus apex at scale 1: d = (1, 1), o = (0, 0), apex = (0, 5), t = 0, 1, 2.
         let line = [(16 << 3) | 4, 1, 1, 0, 0, 0, 5, 0, 1, 2];

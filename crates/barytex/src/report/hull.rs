@@ -176,9 +176,7 @@ fn differences(got: &BTreeSet<(u32, u32)>, want: &BTreeSet<(u32, u32)>) -> (usiz
 
 fn median_ns(method: Method, points: &[Vec2], geo: &GeoInput, runs: usize) -> f64 {
     black_box(method.time_once(points, geo));
-    let mut samples: Vec<f64> = (0..runs)
-        .map(|_| method.time_once(points, geo))
-        .collect();
+    let mut samples: Vec<f64> = (0..runs).map(|_| method.time_once(points, geo)).collect();
     median(&mut samples)
 }
 
@@ -193,7 +191,9 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
     let sets = [
         (
             "uniform square".to_owned(),
-            format!("{n} points uniform in [−1, 1)² (`seeded::points_in_square`, seeded xorshift)."),
+            format!(
+                "{n} points uniform in [−1, 1)² (`seeded::points_in_square`, seeded xorshift)."
+            ),
             points_in_square(&mut XorShift::new(0x5a_2024), n),
         ),
         (
@@ -222,7 +222,9 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
         progress(&format!("{title} ({} points): exact sets", points.len()));
         let geo = GeoInput::new(&points);
         let Some(exact) = exact_sets(&points) else {
-            section.notes.push(format!("{title}: the exact check failed; table skipped."));
+            section
+                .notes
+                .push(format!("{title}: the exact check failed; table skipped."));
             continue;
         };
         let mut table = Table {
@@ -281,7 +283,11 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
              (issue 3's bar: ≤ {} on 10⁶ points).",
             ratio(Method::Drop),
             ratio(Method::Keep),
-            if title == "uniform square" { "0.5×" } else { "1×" }
+            if title == "uniform square" {
+                "0.5×"
+            } else {
+                "1×"
+            }
         ));
         section.tables.push(table);
     }
@@ -338,8 +344,7 @@ fn hard_case_table(runs: usize) -> Table {
         for ((total, time), method) in totals.iter_mut().zip(&mut times).zip(METHODS) {
             *time += median_ns(method, &case.points, &geo, runs);
             let got = method.vertex_set(&case.points, &geo);
-            let (extra, missed) =
-                differences(&got, &exact[usize::from(method.keeps_collinear())]);
+            let (extra, missed) = differences(&got, &exact[usize::from(method.keeps_collinear())]);
             *total += extra + missed;
             row.push(if extra + missed == 0 {
                 format!("✓ {}", got.len())
