@@ -152,8 +152,9 @@ impl ConvexHull2d {
 ///
 /// # Accuracy
 /// Exact: the vertex set is that of the exact hull of the f32 inputs, huge (1e38), tiny and
-/// subnormal coordinates included (tests in `hull_2d.rs` against an exact-rational brute force
-/// and the hard cases of `hard_cases::hull_*`).
+/// subnormal coordinates included (tests `hull_2d.rs::{grid_points_match_brute_force,
+/// random_points_pass_invariants, total_on_any_bits, scale_invariant, hard_cases_are_exact,
+/// million_points_on_a_circle}`, against a brute-force exact hull and spade).
 ///
 /// ```
 /// use barytex_interp::{CollinearPoints, HullShape2d, convex_hull_2d};

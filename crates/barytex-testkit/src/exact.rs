@@ -187,6 +187,25 @@ pub fn perspective_weights(screen: &[f32], w: &[f32]) -> Option<Vec<Q>> {
     Some(q.iter().map(|qi| qi / &sum).collect())
 }
 
+/// `x · 2¹⁴⁹`, an integer for every finite f32.
+fn fixed_point(x: f32) -> BigInt {
+    let bits = x.to_bits();
+    let exponent = ((bits >> 23) & 0xff) as i32;
+    let fraction = i64::from(bits & 0x7f_ffff);
+    // Subnormals: fraction · 2⁻¹⁴⁹; normals: (2²³ + fraction) · 2^(exponent − 150).
+    let (mantissa, shift) = if exponent == 0 {
+        (fraction, 0)
+    } else {
+        (fraction | 0x80_0000, exponent - 1)
+    };
+    let magnitude = BigInt::from(mantissa) << shift;
+    if bits >> 31 == 1 {
+        -magnitude
+    } else {
+        magnitude
+    }
+}
+
 /// The exact 2D hull's vertex set by brute force (`O(n³)` rational orientations, for small
 /// inputs): with `keep`, every distinct point on the boundary, else only the strict corners
 /// (for collinear input, the two extreme points). Each point is named by the lowest index of its
@@ -209,7 +228,20 @@ pub fn convex_hull_2d_vertex_set(points: &[Vec2], keep: bool) -> Vec<usize> {
     if distinct.len() < 2 {
         return distinct.iter().map(|&(_, i)| i).collect();
     }
-    let rational: Vec<P2> = distinct.iter().map(|&(p, _)| p2(p)).collect();
+    // Every finite f32 is an integer multiple of 2⁻¹⁴⁹: scaled by 2¹⁴⁹ the coordinates are
+    // integers, and integer cross products avoid the rationals' gcd on every operation.
+    let scaled: Vec<[BigInt; 2]> = distinct
+        .iter()
+        .map(|&(p, _)| [fixed_point(p.x), fixed_point(p.y)])
+        .collect();
+    let cross = |o: &[BigInt; 2], a: &[BigInt; 2], b: &[BigInt; 2]| {
+        let c = (&a[0] - &o[0]) * (&b[1] - &o[1]) - (&a[1] - &o[1]) * (&b[0] - &o[0]);
+        match c.sign() {
+            num_bigint::Sign::Plus => 1i8,
+            num_bigint::Sign::Minus => -1,
+            num_bigint::Sign::NoSign => 0,
+        }
+    };
     // Keys have `-0.0` normalised to `0.0`, so `total_cmp` is the exact (x, y) order.
     let lex = |a: Vec2, b: Vec2| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y));
     let mut boundary = vec![false; distinct.len()];
@@ -219,9 +251,9 @@ pub fn convex_hull_2d_vertex_set(points: &[Vec2], keep: bool) -> Vec<usize> {
             if a == b {
                 continue;
             }
-            let signs: Vec<i8> = rational
+            let signs: Vec<i8> = scaled
                 .iter()
-                .map(|q| sign(&cross2(&rational[a], &rational[b], q)))
+                .map(|q| cross(&scaled[a], &scaled[b], q))
                 .collect();
             if signs.contains(&-1) {
                 continue;
@@ -262,5 +294,45 @@ mod tests {
         for (wi, (n, d)) in w.iter().zip(expect) {
             assert_eq!(*wi, Q::new(BigInt::from(n), BigInt::from(d)));
         }
+    }
+
+    #[test]
+    fn fixed_point_is_exact() {
+        let scale = Q::from_integer(BigInt::from(1) << 149);
+        for x in [
+            0.0f32,
+            -0.0,
+            1.0,
+            -1.5,
+            1e-45,
+            -3e-39,
+            1e-30,
+            0.1,
+            3.4e38,
+            -f32::MAX,
+        ] {
+            assert_eq!(Q::from_integer(fixed_point(x)), qf(x) * &scale, "{x}");
+        }
+    }
+
+    #[test]
+    fn brute_force_hull_of_a_square_with_edge_points() {
+        let points = [
+            Vec2::ZERO,
+            Vec2::new(1.0, 0.0),
+            Vec2::new(2.0, 0.0),
+            Vec2::new(2.0, 2.0),
+            Vec2::new(0.0, 2.0),
+            Vec2::new(1.0, 1.0),
+            Vec2::new(-0.0, 0.0),
+        ];
+        assert_eq!(convex_hull_2d_vertex_set(&points, false), vec![0, 2, 3, 4]);
+        assert_eq!(
+            convex_hull_2d_vertex_set(&points, true),
+            vec![0, 1, 2, 3, 4]
+        );
+        assert_eq!(convex_hull_2d_vertex_set(&points[..3], false), vec![0, 2]);
+        assert_eq!(convex_hull_2d_vertex_set(&points[..3], true), vec![0, 1, 2]);
+        assert!(convex_hull_2d_vertex_set(&[], true).is_empty());
     }
 }

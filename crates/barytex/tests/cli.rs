@@ -58,6 +58,8 @@ fn quick_report_writes_every_family() {
         "## 3D barycentric",
         "## Orientation",
         "## Inverse bilinear",
+        "## SLERP family",
+        "## 2D convex hull",
     ] {
         assert!(interp.contains(heading), "missing {heading:?}");
     }

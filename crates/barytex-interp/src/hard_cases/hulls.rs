@@ -24,7 +24,7 @@ pub struct HullCase2d {
 /// algorithms get no head start.
 ///
 /// Rounding to f32 moves each point by up to half an ulp (3e-8) off the circle, while neighbours
-/// at `n = 10⁶` bulge only 8e-13 beyond their chord: the exact hull keeps a fraction of the
+/// at `n = 10⁶` bulge only 5e-12 beyond their chord: the exact hull keeps a fraction of the
 /// points, and which ones only exact orientation decides.
 #[must_use]
 pub fn hull_circle_2d(n: usize) -> Vec<Vec2> {

@@ -362,3 +362,137 @@ fn locate(s: &[Vec2], p: Vec2) -> Side {
         Side::Outside
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn v(x: f32, y: f32) -> Vec2 {
+        Vec2::new(x, y)
+    }
+
+    fn hull(vertices: &[usize], shape: HullShape2d, collinear: CollinearPoints) -> ConvexHull2d {
+        ConvexHull2d {
+            vertices: vertices.to_vec(),
+            shape,
+            collinear,
+        }
+    }
+
+    /// A square with a point inside its bottom edge, one inside it, and a copy of a corner.
+    const SQUARE: [Vec2; 7] = [
+        Vec2::new(0.0, 0.0),
+        Vec2::new(1.0, 0.0),
+        Vec2::new(2.0, 0.0),
+        Vec2::new(2.0, 2.0),
+        Vec2::new(0.0, 2.0),
+        Vec2::new(1.0, 1.0),
+        Vec2::new(2.0, 2.0),
+    ];
+
+    #[test]
+    fn every_defect_is_detected() {
+        use CollinearPoints::{Drop, Keep};
+        use HullDefect2d as D;
+        use HullShape2d::{Point, Polygon, Segment};
+        let check =
+            |vertices: &[usize], shape, policy| hull(vertices, shape, policy).validate(&SQUARE);
+        assert_eq!(check(&[0, 2, 3, 4], Polygon, Drop), Ok(()));
+        assert_eq!(check(&[0, 1, 2, 3, 4], Polygon, Keep), Ok(()));
+        assert_eq!(
+            check(&[0, 4, 3, 2], Polygon, Drop),
+            Err(D::NotConvex { position: 0 })
+        );
+        assert_eq!(
+            check(&[0, 1, 2, 3, 4], Polygon, Drop),
+            Err(D::NotConvex { position: 1 })
+        );
+        assert_eq!(
+            check(&[0, 2, 3, 4], Polygon, Keep),
+            Err(D::MissingBoundaryPoint { index: 1 })
+        );
+        assert_eq!(
+            check(&[0, 2, 3], Polygon, Drop),
+            Err(D::PointOutside { index: 4 })
+        );
+        assert_eq!(
+            check(&[2, 3, 4, 0], Polygon, Drop),
+            Err(D::WrongStart {
+                found: 2,
+                expected: 0
+            })
+        );
+        assert_eq!(
+            check(&[0, 2, 6, 4], Polygon, Drop),
+            Err(D::NotLowestIndex {
+                position: 2,
+                index: 6,
+                lowest: 3
+            })
+        );
+        assert_eq!(
+            check(&[0, 9, 3, 4], Polygon, Drop),
+            Err(D::IndexOutOfRange {
+                position: 1,
+                index: 9
+            })
+        );
+        assert_eq!(
+            check(&[0, 2, 3, 4, 0], Polygon, Drop),
+            Err(D::RepeatedPoint { position: 4 })
+        );
+        assert_eq!(
+            check(&[0, 3], Segment, Drop),
+            Err(D::ShapeMismatch {
+                claimed: Segment,
+                actual: Polygon
+            })
+        );
+        assert_eq!(
+            check(&[0, 2], Polygon, Drop),
+            Err(D::VertexCount {
+                shape: Polygon,
+                count: 2
+            })
+        );
+        let mut bad = SQUARE;
+        bad[1] = v(f32::NAN, 0.0);
+        assert_eq!(
+            hull(&[0], Point, Drop).validate(&bad),
+            Err(D::NonFiniteInput { index: 1 })
+        );
+    }
+
+    #[test]
+    fn segments_and_windings() {
+        use CollinearPoints::{Drop, Keep};
+        use HullDefect2d as D;
+        use HullShape2d::{Polygon, Segment};
+        let line = [v(0.0, 0.0), v(2.0, 2.0), v(1.0, 1.0)];
+        assert_eq!(hull(&[0, 1], Segment, Drop).validate(&line), Ok(()));
+        assert_eq!(hull(&[0, 2, 1], Segment, Keep).validate(&line), Ok(()));
+        assert_eq!(
+            hull(&[0, 1, 2], Segment, Keep).validate(&line),
+            Err(D::OutOfOrder { position: 2 })
+        );
+        assert_eq!(
+            hull(&[0, 2], Segment, Drop).validate(&line),
+            Err(D::PointOutside { index: 1 })
+        );
+        // A pentagram: every turn left, but it winds around twice.
+        let star: [Vec2; 5] = core::array::from_fn(|k| {
+            let a = core::f64::consts::TAU * k as f64 / 5.0;
+            glam::DVec2::from_angle(a).as_vec2()
+        });
+        let lowest = (0..5)
+            .min_by(|&a, &b| key(star[a]).cmp(&key(star[b])))
+            .unwrap_or(0);
+        let order: [usize; 5] = core::array::from_fn(|k| (lowest + 2 * k) % 5);
+        assert_eq!(
+            hull(&order, Polygon, Drop).validate(&star),
+            Err(D::WindsMoreThanOnce)
+        );
+        let order: [usize; 5] = core::array::from_fn(|k| (lowest + k) % 5);
+        assert_eq!(hull(&order, Polygon, Drop).validate(&star), Ok(()));
+    }
+}

@@ -6,6 +6,7 @@
 
 mod barycentric_2d;
 mod barycentric_3d;
+mod hull;
 mod inverse_bilinear;
 mod orientation;
 mod slerp;
@@ -71,12 +72,13 @@ impl Settings {
 pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     let settings = Settings::new(options.quick);
     type Family = fn(Settings, &mut dyn FnMut(&str)) -> Section;
-    let families: [(&str, Family); 5] = [
+    let families: [(&str, Family); 6] = [
         ("2D barycentric", barycentric_2d::run),
         ("3D barycentric", barycentric_3d::run),
         ("orientation", orientation::run),
         ("inverse bilinear", inverse_bilinear::run),
         ("SLERP family", slerp::run),
+        ("2D convex hull", hull::run),
     ];
     let count = families.len();
     let mut sections = Vec::with_capacity(count);
