@@ -15,7 +15,8 @@ use barytex_testkit::fuzz_inputs::{
     check_inverse_bilinear, check_orient_barycentric, inverse_bilinear_geometry,
     orient_barycentric_geometry,
 };
-use glam::Vec2;
+use barytex_testkit::fuzz_inputs::hull3d::{check_hull3d, hull3d_points};
+use glam::{Vec2, Vec3};
 
 fn regressions_dir(target: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -104,4 +105,18 @@ fn layout_inverse_bilinear() {
     // Mode 1 with k = −1: p is corner x, one ulp down in x.
     let (p, _) = inverse_bilinear_geometry(&le_words(&words, Some((15 << 3) | 1)));
     assert_eq!(p, Vec2::new(-f32::from_bits(1), 0.0));
+}
+
+#[test]
+fn hull3d_regressions() {
+    replay("hull3d", check_hull3d);
+    // Layout: mode byte, then whole 12-byte points (a partial point is ignored).
+    let mut bytes = vec![0u8];
+    for x in [1.0f32, 2.0, 3.0, 4.0] {
+        bytes.extend(x.to_bits().to_le_bytes());
+    }
+    assert_eq!(hull3d_points(&bytes), vec![Vec3::new(1.0, 2.0, 3.0)]);
+    // Kind 6 with k = -1: the last point of the line is one ulp down in y.
+    let line = hull3d_points(&[(15 << 3) | 6, 33, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]);
+    assert_eq!(line, vec![Vec3::new(1.0, 2.0f32.next_down(), 3.0)]);
 }
