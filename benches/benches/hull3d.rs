@@ -81,7 +81,11 @@ fn bench_orient3d(c: &mut Criterion) {
         for &[a, b, p, q] in quads {
             let ours = orient3d(a, b, p, q).map_or(0, |o| o.sign());
             let theirs = -robust_orient3d([a, b, p, q]).signum() as i8;
-            let theirs = if robust_orient3d([a, b, p, q]) == 0.0 { 0 } else { theirs };
+            let theirs = if robust_orient3d([a, b, p, q]) == 0.0 {
+                0
+            } else {
+                theirs
+            };
             assert_eq!(ours, theirs, "{a:?} {b:?} {p:?} {q:?}");
         }
     }
@@ -135,7 +139,10 @@ fn bench_hull3d(c: &mut Criterion) {
     group.sample_size(10);
     for (set, points) in &sets {
         let corners = convex_hull_3d(points).map_or(0, |h| h.vertices().len());
-        println!("convex_hull_3d/{set}: {corners} corners of {}", points.len());
+        println!(
+            "convex_hull_3d/{set}: {corners} corners of {}",
+            points.len()
+        );
         group.bench_function(format!("barytex_convex_hull_3d/{set}"), |b| {
             b.iter(|| black_box(convex_hull_3d(black_box(points))));
         });

@@ -11,11 +11,11 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use barytex_testkit::fuzz_inputs::hull3d::{check_hull3d, hull3d_points};
 use barytex_testkit::fuzz_inputs::{
     check_inverse_bilinear, check_orient_barycentric, inverse_bilinear_geometry,
     orient_barycentric_geometry,
 };
-use barytex_testkit::fuzz_inputs::hull3d::{check_hull3d, hull3d_points};
 use glam::{Vec2, Vec3};
 
 fn regressions_dir(target: &str) -> PathBuf {

@@ -461,13 +461,12 @@ impl<'a> Quickhull<'a> {
 
     fn run(&mut self, subset: &[u32], [p0, p1, p2, p3]: [u32; 4]) {
         // Orient the tetrahedron so that (p0, p1, p2) faces away from p3.
-        let (p1, p2) = if orient3d_sign_det(self.pt(p0), self.pt(p1), self.pt(p2), self.pt(p3))
-            > 0.0
-        {
-            (p2, p1)
-        } else {
-            (p1, p2)
-        };
+        let (p1, p2) =
+            if orient3d_sign_det(self.pt(p0), self.pt(p1), self.pt(p2), self.pt(p3)) > 0.0 {
+                (p2, p1)
+            } else {
+                (p1, p2)
+            };
         let tets = [[p0, p1, p2], [p0, p3, p1], [p1, p3, p2], [p0, p2, p3]];
         let ids: Vec<u32> = tets.iter().map(|&v| self.add_facet(v)).collect();
         for &f in &ids {
@@ -608,7 +607,7 @@ fn strict_corners(points: &[Vec3], vertices: &[u32], facets: &[[u32; 3]]) -> Vec
     let coplanar = |plane: [u32; 3], f: [u32; 3]| {
         let [a, b, c] = plane.map(pt);
         f.iter()
-            .all(|&x| orient3d_sign_det(a, b, c, pt(x)) == 0.0)
+            .all(|&x| plane.contains(&x) || orient3d_sign_det(a, b, c, pt(x)) == 0.0)
     };
     let is_strict = |v: u32| {
         let around = &incident[start[v as usize] as usize..start[v as usize + 1] as usize];
@@ -735,11 +734,7 @@ fn validate_segment(points: &[Vec3], lo: usize, hi: usize) -> Result<(), Hull3dD
     Ok(())
 }
 
-fn validate_polygon(
-    points: &[Vec3],
-    vertices: &[usize],
-    axis: usize,
-) -> Result<(), Hull3dDefect> {
+fn validate_polygon(points: &[Vec3], vertices: &[usize], axis: usize) -> Result<(), Hull3dDefect> {
     let n = vertices.len();
     if n < 3 || axis > 2 {
         return Err(Hull3dDefect::WrongKind { point: 0 });
@@ -833,14 +828,17 @@ fn validate_polytope(
             return Err(Hull3dDefect::PointOutside { point, facet });
         }
     }
-    let facets32: Vec<[u32; 3]> = facets
-        .iter()
-        .map(|f| f.map(|i| i as u32))
-        .collect();
+    let facets32: Vec<[u32; 3]> = facets.iter().map(|f| f.map(|i| i as u32)).collect();
     let vertices32: Vec<u32> = vertices.iter().map(|&v| v as u32).collect();
     let strict = strict_corners(points, &vertices32, &facets32);
-    match vertices32.iter().zip(strict.iter().chain(core::iter::repeat(&u32::MAX))).find(|(v, s)| v != s) {
-        Some((&vertex, _)) => Err(Hull3dDefect::NotStrictCorner { vertex: vertex as usize }),
+    match vertices32
+        .iter()
+        .zip(strict.iter().chain(core::iter::repeat(&u32::MAX)))
+        .find(|(v, s)| v != s)
+    {
+        Some((&vertex, _)) => Err(Hull3dDefect::NotStrictCorner {
+            vertex: vertex as usize,
+        }),
         None => Ok(()),
     }
 }

@@ -87,7 +87,10 @@ pub(crate) fn orient3d_sign_det(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> f64 {
     // factor as NaN, a non-zero one as ±∞, and no sum of finite terms cancels either). Finite
     // f32 inputs never overflow (see the module docs), so callers test `det` instead of the
     // twelve inputs.
-    if det.abs() > O3D_ERRBOUND_A * permanent || !det.is_finite() {
+    // A zero permanent means a zero factor in each of the six products; differences of f32
+    // values never round to zero, so the exact determinant is zero too (repeated points land
+    // here, not in the exact stage).
+    if det.abs() > O3D_ERRBOUND_A * permanent || permanent == 0.0 || !det.is_finite() {
         return det;
     }
     exact_det(a, b, c, d)
@@ -214,7 +217,7 @@ mod expansion {
     fn two_product_f32(a: f64, b: f64) -> (f64, f64) {
         let p = a * b;
         let (ahi, alo) = split(a);
-        (p, alo * b - ((p - ahi * b)))
+        (p, alo * b - (p - ahi * b))
     }
 
     /// `e · b` exactly for `b` an f32 value (Shewchuk's `scale_expansion_zeroelim`); at most
@@ -320,7 +323,10 @@ mod tests {
         let o = |a, b, c, d| orient3d(a, b, c, d).map(Orientation::sign);
         assert_eq!(o(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z), Some(1));
         assert_eq!(o(Vec3::ZERO, Vec3::X, Vec3::Y, -Vec3::Z), Some(-1));
-        assert_eq!(o(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::ONE.with_z(0.0)), Some(0));
+        assert_eq!(
+            o(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::ONE.with_z(0.0)),
+            Some(0)
+        );
     }
 
     #[test]
@@ -334,7 +340,12 @@ mod tests {
             // 1e30 + 2 rounds to 1e30 in f32: the points are all equal.
             0.0
         );
-        let t = exact_det(Vec3::ONE, Vec3::new(2.0, 1.0, 1.0), Vec3::new(1.0, 3.0, 1.0), Vec3::new(1.0, 1.0, 5.0));
+        let t = exact_det(
+            Vec3::ONE,
+            Vec3::new(2.0, 1.0, 1.0),
+            Vec3::new(1.0, 3.0, 1.0),
+            Vec3::new(1.0, 1.0, 5.0),
+        );
         assert_eq!(t, 8.0);
     }
 }

@@ -209,7 +209,11 @@ fn hard_cases_are_valid() {
         if let Some(corners) = case.corners {
             assert_eq!(hull.vertices().len(), corners, "{label}: {hull:?}");
         }
-        println!("{label}: {} points, {} corners", case.points.len(), hull.vertices().len());
+        println!(
+            "{label}: {} points, {} corners",
+            case.points.len(),
+            hull.vertices().len()
+        );
     }
 }
 
@@ -325,7 +329,10 @@ fn validate_finds_defects() {
         flat_hull.validate(&flat),
         Err(Hull3dDefect::NotStrictCorner { vertex: 8 })
     );
-    assert_eq!(ConvexHull3d::Point { index: 0 }.validate(&cube), Err(Hull3dDefect::WrongKind { point: 1 }));
+    assert_eq!(
+        ConvexHull3d::Point { index: 0 }.validate(&cube),
+        Err(Hull3dDefect::WrongKind { point: 1 })
+    );
 }
 
 /// Points that differ in the last ulp around a large offset, and a box whose sides are single

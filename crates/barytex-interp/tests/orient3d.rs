@@ -22,13 +22,7 @@ fn vec3_finite_bits() -> impl Strategy<Value = Vec3> + Clone {
 
 /// `a + u(b − a) + v(c − a)` rounded to f32, then one coordinate moved `k` ulps: within a few
 /// ulps of the plane of `a, b, c`, often exactly on it.
-fn near_coplanar(
-    [a, b, c]: [Vec3; 3],
-    u: f32,
-    v: f32,
-    axis: usize,
-    k: i32,
-) -> Vec3 {
+fn near_coplanar([a, b, c]: [Vec3; 3], u: f32, v: f32, axis: usize, k: i32) -> Vec3 {
     let mut d = a + (b - a) * u + (c - a) * v;
     d[axis] = step_ulps(d[axis], k);
     d
@@ -39,14 +33,23 @@ fn sign_convention() {
     // Positive: d on the side the normal (b − a) × (c − a) points to (a, b, c counter-clockwise
     // seen from d).
     let o = |a, b, c, d| orient3d(a, b, c, d).unwrap();
-    assert_eq!(o(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z), Orientation::CounterClockwise);
-    assert_eq!(o(Vec3::ZERO, Vec3::X, Vec3::Y, -Vec3::Z), Orientation::Clockwise);
+    assert_eq!(
+        o(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z),
+        Orientation::CounterClockwise
+    );
+    assert_eq!(
+        o(Vec3::ZERO, Vec3::X, Vec3::Y, -Vec3::Z),
+        Orientation::Clockwise
+    );
     assert_eq!(
         o(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::new(5.0, -7.0, 0.0)),
         Orientation::Collinear
     );
     // The opposite of Shewchuk's (robust's) convention.
-    assert_eq!(o(Vec3::Z, Vec3::ZERO, Vec3::X, Vec3::Y), Orientation::Clockwise);
+    assert_eq!(
+        o(Vec3::Z, Vec3::ZERO, Vec3::X, Vec3::Y),
+        Orientation::Clockwise
+    );
 }
 
 proptest! {
@@ -133,9 +136,14 @@ fn near_coplanar_batch_has_no_wrong_sign() {
         naive_wrong += usize::from(orient3d_naive_f64(a, b, c, d).sign() != want);
         coplanar += usize::from(want == 0);
     }
-    println!("near-coplanar 20 000: exact {wrong}, naive f64 {naive_wrong} wrong; {coplanar} coplanar");
+    println!(
+        "near-coplanar 20 000: exact {wrong}, naive f64 {naive_wrong} wrong; {coplanar} coplanar"
+    );
     assert_eq!(wrong, 0);
-    assert!(naive_wrong > 0, "the batch must defeat the naive determinant");
+    assert!(
+        naive_wrong > 0,
+        "the batch must defeat the naive determinant"
+    );
     assert!(coplanar > 0);
 }
 
@@ -145,23 +153,63 @@ fn extreme_magnitudes_are_exact() {
     let tiny = f32::from_bits(1);
     let cases = [
         // Largest magnitudes: products of three differences near 2³⁸⁷.
-        [Vec3::splat(m), Vec3::splat(-m), Vec3::new(m, -m, m), Vec3::new(-m, m, -m)],
-        [Vec3::new(m, 0.0, 0.0), Vec3::new(0.0, m, 0.0), Vec3::new(0.0, 0.0, m), Vec3::new(-m, -m, -m)],
+        [
+            Vec3::splat(m),
+            Vec3::splat(-m),
+            Vec3::new(m, -m, m),
+            Vec3::new(-m, m, -m),
+        ],
+        [
+            Vec3::new(m, 0.0, 0.0),
+            Vec3::new(0.0, m, 0.0),
+            Vec3::new(0.0, 0.0, m),
+            Vec3::new(-m, -m, -m),
+        ],
         // Smallest: subnormal coordinates, products near 2⁻⁴⁴⁷.
-        [Vec3::ZERO, Vec3::new(tiny, 0.0, 0.0), Vec3::new(0.0, tiny, 0.0), Vec3::new(0.0, 0.0, tiny)],
-        [Vec3::ZERO, Vec3::new(tiny, 0.0, 0.0), Vec3::new(0.0, tiny, 0.0), Vec3::new(tiny, tiny, 0.0)],
+        [
+            Vec3::ZERO,
+            Vec3::new(tiny, 0.0, 0.0),
+            Vec3::new(0.0, tiny, 0.0),
+            Vec3::new(0.0, 0.0, tiny),
+        ],
+        [
+            Vec3::ZERO,
+            Vec3::new(tiny, 0.0, 0.0),
+            Vec3::new(0.0, tiny, 0.0),
+            Vec3::new(tiny, tiny, 0.0),
+        ],
         // Mixed: 1e-30 beside 1e30.
-        [Vec3::splat(1e30), Vec3::new(1e-30, 0.0, 0.0), Vec3::new(0.0, 1e-30, 1e30), Vec3::new(1e-30, 1e-30, 1e-30)],
-        [Vec3::new(1e30, 1e30, 0.0), Vec3::new(-1e30, -1e30, 0.0), Vec3::ZERO, Vec3::new(0.0, 0.0, 1e-45)],
+        [
+            Vec3::splat(1e30),
+            Vec3::new(1e-30, 0.0, 0.0),
+            Vec3::new(0.0, 1e-30, 1e30),
+            Vec3::new(1e-30, 1e-30, 1e-30),
+        ],
+        [
+            Vec3::new(1e30, 1e30, 0.0),
+            Vec3::new(-1e30, -1e30, 0.0),
+            Vec3::ZERO,
+            Vec3::new(0.0, 0.0, 1e-45),
+        ],
         // Exactly coplanar at 1e30 with inexact-looking values.
-        [Vec3::new(1e30, 3e30, 7e30), Vec3::new(2e30, 6e30, 14e30), Vec3::new(3e30, 9e30, 21e30), Vec3::new(0.1, 0.3, 0.7)],
+        [
+            Vec3::new(1e30, 3e30, 7e30),
+            Vec3::new(2e30, 6e30, 14e30),
+            Vec3::new(3e30, 9e30, 21e30),
+            Vec3::new(0.1, 0.3, 0.7),
+        ],
     ];
     for [a, b, c, d] in cases {
         check_orient3d(a, b, c, d).unwrap();
         check_orient3d(d, c, b, a).unwrap();
     }
     assert_eq!(
-        orient3d(Vec3::ZERO, Vec3::new(tiny, 0.0, 0.0), Vec3::new(0.0, tiny, 0.0), Vec3::new(0.0, 0.0, tiny)),
+        orient3d(
+            Vec3::ZERO,
+            Vec3::new(tiny, 0.0, 0.0),
+            Vec3::new(0.0, tiny, 0.0),
+            Vec3::new(0.0, 0.0, tiny)
+        ),
         Some(Orientation::CounterClockwise)
     );
 }
@@ -175,7 +223,11 @@ fn last_ulp_tetrahedra_are_exact() {
         for axis in 0..3 {
             let mut d = Vec3::new(up(1), up(1), one);
             d[axis] = step_ulps(d[axis], k);
-            let (a, b, c) = (Vec3::ONE, Vec3::new(up(2), one, one), Vec3::new(one, up(2), one));
+            let (a, b, c) = (
+                Vec3::ONE,
+                Vec3::new(up(2), one, one),
+                Vec3::new(one, up(2), one),
+            );
             check_orient3d(a, b, c, d).unwrap();
         }
     }
@@ -184,7 +236,12 @@ fn last_ulp_tetrahedra_are_exact() {
 #[test]
 fn non_finite_gives_none() {
     for v in barytex_interp::hard_cases::NON_FINITE {
-        let bad = [Vec3::new(v, 0.0, 0.0), Vec3::new(0.0, v, 0.0), Vec3::new(0.0, 0.0, v), Vec3::splat(v)];
+        let bad = [
+            Vec3::new(v, 0.0, 0.0),
+            Vec3::new(0.0, v, 0.0),
+            Vec3::new(0.0, 0.0, v),
+            Vec3::splat(v),
+        ];
         for p in bad {
             assert_eq!(orient3d(p, Vec3::X, Vec3::Y, Vec3::Z), None);
             assert_eq!(orient3d(Vec3::ZERO, p, Vec3::Y, Vec3::Z), None);
@@ -194,6 +251,22 @@ fn non_finite_gives_none() {
     }
     // Infinite but with zero cross terms, and opposite infinities that could cancel.
     let inf = f32::INFINITY;
-    assert_eq!(orient3d(Vec3::new(inf, 0.0, 0.0), Vec3::new(inf, 0.0, 0.0), Vec3::ZERO, Vec3::ZERO), None);
-    assert_eq!(orient3d(Vec3::new(inf, 0.0, 0.0), Vec3::new(-inf, 0.0, 0.0), Vec3::Y, Vec3::Z), None);
+    assert_eq!(
+        orient3d(
+            Vec3::new(inf, 0.0, 0.0),
+            Vec3::new(inf, 0.0, 0.0),
+            Vec3::ZERO,
+            Vec3::ZERO
+        ),
+        None
+    );
+    assert_eq!(
+        orient3d(
+            Vec3::new(inf, 0.0, 0.0),
+            Vec3::new(-inf, 0.0, 0.0),
+            Vec3::Y,
+            Vec3::Z
+        ),
+        None
+    );
 }

@@ -99,7 +99,11 @@ fn scaled_integer(x: f32) -> Z {
         (fraction | 0x80_0000, exponent - 1)
     };
     let magnitude = Z::from(mantissa) << shift as usize;
-    if bits >> 31 == 1 { -magnitude } else { magnitude }
+    if bits >> 31 == 1 {
+        -magnitude
+    } else {
+        magnitude
+    }
 }
 
 fn sub(a: &P3, b: &P3) -> P3 {
@@ -161,21 +165,21 @@ pub fn reference_hull_vertices(points: &[Vec3]) -> Vec<usize> {
     let Some((_, _, normal)) = triple else {
         // Collinear: the lexicographic extremes.
         let key = |i: usize| (points[i].x, points[i].y, points[i].z);
-        let lo = reps
-            .iter()
-            .copied()
-            .min_by(|&a, &b| key(a).partial_cmp(&key(b)).unwrap_or(std::cmp::Ordering::Equal));
-        let hi = reps
-            .iter()
-            .copied()
-            .max_by(|&a, &b| key(a).partial_cmp(&key(b)).unwrap_or(std::cmp::Ordering::Equal));
+        let lo = reps.iter().copied().min_by(|&a, &b| {
+            key(a)
+                .partial_cmp(&key(b))
+                .unwrap_or(std::cmp::Ordering::Equal)
+        });
+        let hi = reps.iter().copied().max_by(|&a, &b| {
+            key(a)
+                .partial_cmp(&key(b))
+                .unwrap_or(std::cmp::Ordering::Equal)
+        });
         let mut ends: Vec<usize> = lo.into_iter().chain(hi).collect();
         ends.sort_unstable();
         return ends;
     };
-    let coplanar = qs
-        .iter()
-        .all(|p| dot(&normal, &sub(p, &qs[0])).is_zero());
+    let coplanar = qs.iter().all(|p| dot(&normal, &sub(p, &qs[0])).is_zero());
     let apex = coplanar.then(|| {
         // The centroid plus the normal, in integers: scaling every point by n makes the
         // centroid the (unscaled) sum.
@@ -220,10 +224,7 @@ pub fn reference_hull_vertices(points: &[Vec3]) -> Vec<usize> {
         let full_rank = normals.iter().enumerate().any(|(x, a)| {
             normals[x + 1..].iter().enumerate().any(|(y, b)| {
                 let ab = cross(a, b);
-                !is_zero(&ab)
-                    && normals[x + y + 2..]
-                        .iter()
-                        .any(|c| !dot(&ab, c).is_zero())
+                !is_zero(&ab) && normals[x + y + 2..].iter().any(|c| !dot(&ab, c).is_zero())
             })
         });
         if full_rank {

@@ -90,8 +90,17 @@ pub fn hulls_3d() -> impl Iterator<Item = Hull3dCase> {
     case("grid with coplanar faces", 6.0, grid(6), Some(8));
     let mut dup = grid(2);
     dup.extend(grid(2));
-    dup.extend([Vec3::splat(0.5), Vec3::new(0.5, 0.5, 1.0), Vec3::new(0.5, 0.0, 0.0)]);
-    case("cube, duplicates, face and edge midpoints", 0.0, dup, Some(8));
+    dup.extend([
+        Vec3::splat(0.5),
+        Vec3::new(0.5, 0.5, 1.0),
+        Vec3::new(0.5, 0.0, 0.0),
+    ]);
+    case(
+        "cube, duplicates, face and edge midpoints",
+        0.0,
+        dup,
+        Some(8),
+    );
     case(
         "all equal",
         0.0,
@@ -114,8 +123,18 @@ pub fn hulls_3d() -> impl Iterator<Item = Hull3dCase> {
     }));
     case("last-ulp cloud in a 3-ulp cube", 3.0, ulp_cloud, Some(8));
     for scale in [1e30f32, 1e-30] {
-        case("sphere scaled", scale, sphere(300, 0x1e30).iter().map(|&p| p * scale).collect(), None);
-        case("grid scaled", scale, grid(4).iter().map(|&p| p * scale).collect(), Some(8));
+        case(
+            "sphere scaled",
+            scale,
+            sphere(300, 0x1e30).iter().map(|&p| p * scale).collect(),
+            None,
+        );
+        case(
+            "grid scaled",
+            scale,
+            grid(4).iter().map(|&p| p * scale).collect(),
+            Some(8),
+        );
     }
     // A slab: points exactly on the plane z = x + y (small integers, exact), then the same points
     // one ulp above and below: the hull's top and bottom are nearly coplanar sheets.
@@ -134,10 +153,14 @@ pub fn hulls_3d() -> impl Iterator<Item = Hull3dCase> {
         Vec3::new(-0.3, 1.3, 2.1),
     );
     let tilted: Vec<Vec3> = (0..10)
-        .flat_map(|i| (0..10).map(move |j| a + (b - a) * (i as f32 / 9.0) + (c - a) * (j as f32 / 9.0)))
+        .flat_map(|i| {
+            (0..10).map(move |j| a + (b - a) * (i as f32 / 9.0) + (c - a) * (j as f32 / 9.0))
+        })
         .collect();
     case("rounded tilted plane", 100.0, tilted, None);
-    let line: Vec<Vec3> = (0..40).map(|i| Vec3::new(i as f32, 2.0 * i as f32, 3.0 * i as f32)).collect();
+    let line: Vec<Vec3> = (0..40)
+        .map(|i| Vec3::new(i as f32, 2.0 * i as f32, 3.0 * i as f32))
+        .collect();
     case("collinear", 40.0, line, Some(2));
     cases.into_iter()
 }

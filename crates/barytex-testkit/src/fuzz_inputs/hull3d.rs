@@ -54,7 +54,11 @@ pub fn hull3d_points(bytes: &[u8]) -> Vec<Vec3> {
                 5 => {
                     let p = Vec3::new(unit(c(0)), unit(c(1)), unit(c(2))).as_dvec3();
                     let len = p.length();
-                    if len > 0.0 { (p / len).as_vec3() } else { Vec3::X }
+                    if len > 0.0 {
+                        (p / len).as_vec3()
+                    } else {
+                        Vec3::X
+                    }
                 }
                 6 => Vec3::new(1.0, 2.0, 3.0) * ((c(0) % 64) as f32 - 32.0),
                 7 => {
