@@ -71,10 +71,16 @@ pub fn orient3d(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> Option<Orientation> {
 /// example to pick the point farthest from a plane). NaN or infinite exactly when an input is.
 #[inline]
 pub(crate) fn orient3d_sign_det(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> f64 {
-    let a64 = a.as_dvec3();
-    let u = b.as_dvec3() - a64;
-    let v = c.as_dvec3() - a64;
-    let w = d.as_dvec3() - a64;
+    // Scalar conversions: glam's packed `as_dvec3` reloads the f32 triple in halves straight
+    // after the caller stored it, a store-forwarding stall that cost more than the arithmetic.
+    let diff = |p: Vec3| {
+        glam::DVec3::new(
+            f64::from(p.x) - f64::from(a.x),
+            f64::from(p.y) - f64::from(a.y),
+            f64::from(p.z) - f64::from(a.z),
+        )
+    };
+    let (u, v, w) = (diff(b), diff(c), diff(d));
     let vw_x = v.y * w.z - v.z * w.y;
     let vw_y = v.z * w.x - v.x * w.z;
     let vw_z = v.x * w.y - v.y * w.x;
