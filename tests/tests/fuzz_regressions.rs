@@ -12,12 +12,13 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use barytex_testkit::fuzz_inputs::hull2d::{check_hull2d, hull2d_points};
+use barytex_testkit::fuzz_inputs::hull3d::{check_hull3d, hull3d_points};
 use barytex_testkit::fuzz_inputs::polygon::{check_polygon, polygon_geometry};
 use barytex_testkit::fuzz_inputs::{
     check_inverse_bilinear, check_orient_barycentric, inverse_bilinear_geometry,
     orient_barycentric_geometry,
 };
-use glam::Vec2;
+use glam::{Vec2, Vec3};
 
 fn regressions_dir(target: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -135,4 +136,18 @@ fn hull2d_regressions() {
         hull2d_points(&[(16 << 3) | 1, 3, 0xfe]),
         vec![Vec2::new(3.0, -2.0)]
     );
+}
+
+#[test]
+fn hull3d_regressions() {
+    replay("hull3d", check_hull3d);
+    // Layout: mode byte, then whole 12-byte points (a partial point is ignored).
+    let mut bytes = vec![0u8];
+    for x in [1.0f32, 2.0, 3.0, 4.0] {
+        bytes.extend(x.to_bits().to_le_bytes());
+    }
+    assert_eq!(hull3d_points(&bytes), vec![Vec3::new(1.0, 2.0, 3.0)]);
+    // Kind 6 with k = -1: the last point of the line is one ulp down in y.
+    let line = hull3d_points(&[(15 << 3) | 6, 33, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]);
+    assert_eq!(line, vec![Vec3::new(1.0, 2.0f32.next_down(), 3.0)]);
 }

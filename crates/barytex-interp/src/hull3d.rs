@@ -606,7 +606,8 @@ fn strict_corners(points: &[Vec3], vertices: &[u32], facets: &[[u32; 3]]) -> Vec
     let pt = |i: u32| points[i as usize];
     let coplanar = |plane: [u32; 3], f: [u32; 3]| {
         let [a, b, c] = plane.map(pt);
-        f.iter().all(|&x| orient3d_sign_det(a, b, c, pt(x)) == 0.0)
+        f.iter()
+            .all(|&x| plane.contains(&x) || orient3d_sign_det(a, b, c, pt(x)) == 0.0)
     };
     let is_strict = |v: u32| {
         let around = &incident[start[v as usize] as usize..start[v as usize + 1] as usize];

@@ -71,10 +71,16 @@ pub fn orient3d(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> Option<Orientation> {
 /// example to pick the point farthest from a plane). NaN or infinite exactly when an input is.
 #[inline]
 pub(crate) fn orient3d_sign_det(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> f64 {
-    let a64 = a.as_dvec3();
-    let u = b.as_dvec3() - a64;
-    let v = c.as_dvec3() - a64;
-    let w = d.as_dvec3() - a64;
+    // Scalar conversions: glam's packed `as_dvec3` reloads the f32 triple in halves straight
+    // after the caller stored it, a store-forwarding stall that cost more than the arithmetic.
+    let diff = |p: Vec3| {
+        glam::DVec3::new(
+            f64::from(p.x) - f64::from(a.x),
+            f64::from(p.y) - f64::from(a.y),
+            f64::from(p.z) - f64::from(a.z),
+        )
+    };
+    let (u, v, w) = (diff(b), diff(c), diff(d));
     let vw_x = v.y * w.z - v.z * w.y;
     let vw_y = v.z * w.x - v.x * w.z;
     let vw_z = v.x * w.y - v.y * w.x;
@@ -87,7 +93,10 @@ pub(crate) fn orient3d_sign_det(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> f64 {
     // factor as NaN, a non-zero one as ±∞, and no sum of finite terms cancels either). Finite
     // f32 inputs never overflow (see the module docs), so callers test `det` instead of the
     // twelve inputs.
-    if det.abs() > O3D_ERRBOUND_A * permanent || !det.is_finite() {
+    // A zero permanent means a zero factor in each of the six products; differences of f32
+    // values never round to zero, so the exact determinant is zero too (repeated points land
+    // here, not in the exact stage).
+    if det.abs() > O3D_ERRBOUND_A * permanent || permanent == 0.0 || !det.is_finite() {
         return det;
     }
     exact_det(a, b, c, d)
@@ -97,15 +106,17 @@ pub(crate) fn orient3d_sign_det(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> f64 {
 #[cold]
 #[inline(never)]
 fn exact_det(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> f64 {
-    use expansion::{Expansion, scale, sum};
+    use expansion::{Expansion, scale_by_f32, sum};
+    let [za, zb, zc, zd] = [a.z, b.z, c.z, d.z];
     let [a, b, c, d] = [a, b, c, d].map(|p| p.as_dvec3());
     // 2×2 minors `m(p, q) = p.x·q.y − q.x·p.y` of the xy projections, as exact product pairs.
     let m = |p: glam::DVec3, q: glam::DVec3| [p.x * q.y, -(q.x * p.y)];
     let (ab, ac, ad, bc, bd, cd) = (m(a, b), m(a, c), m(a, d), m(b, c), m(b, d), m(c, d));
     let neg = |[x, y]: [f64; 2]| [-x, -y];
-    // `M(p, q, r) = det[[p.x, p.y, 1], [q.x, q.y, 1], [r.x, r.y, 1]] = m(p,q) + m(q,r) + m(r,p)`.
+    // `M(p, q, r) = det[[p.x, p.y, 1], [q.x, q.y, 1], [r.x, r.y, 1]] = m(p,q) + m(q,r) + m(r,p)`:
+    // six exact products, at most six components.
     let minor = |x: [f64; 2], y: [f64; 2], z: [f64; 2]| {
-        let mut e = Expansion::default();
+        let mut e = Expansion::<6>::new();
         for t in x.into_iter().chain(y).chain(z) {
             e.grow(t);
         }
@@ -113,47 +124,47 @@ fn exact_det(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> f64 {
     };
     // The 4×4 determinant with rows (x, y, z, 1) is `D = z_a·M(b,c,d) − z_b·M(a,c,d) +
     // z_c·M(a,b,d) − z_d·M(a,b,c)` (cofactors along the z column), and `det[b − a, c − a, d − a]
-    // = −D` (subtract row a from the others, then expand along the column of ones).
-    let ma = scale(&minor(bc, cd, neg(bd)), -a.z);
-    let mb = scale(&minor(ac, cd, neg(ad)), b.z);
-    let mc = scale(&minor(ab, bd, neg(ad)), -c.z);
-    let md = scale(&minor(ab, bc, neg(ac)), d.z);
-    sum(&sum(&ma, &mb), &sum(&mc, &md)).estimate()
+    // = −D` (subtract row a from the others, then expand along the column of ones). Each
+    // scaled minor has at most 12 components, each pair sum 24, the total 48.
+    let ma: Expansion<12> = scale_by_f32(&minor(bc, cd, neg(bd)), -za);
+    let mb: Expansion<12> = scale_by_f32(&minor(ac, cd, neg(ad)), zb);
+    let mc: Expansion<12> = scale_by_f32(&minor(ab, bd, neg(ad)), -zc);
+    let md: Expansion<12> = scale_by_f32(&minor(ab, bc, neg(ac)), zd);
+    let left: Expansion<24> = sum(&ma, &mb);
+    let right: Expansion<24> = sum(&mc, &md);
+    let total: Expansion<48> = sum(&left, &right);
+    total.estimate()
 }
 
 /// Shewchuk's expansion arithmetic ("Adaptive Precision Floating-Point Arithmetic and Fast Robust
 /// Geometric Predicates", 1997) on fixed-capacity arrays: an expansion is a list of f64
 /// components, increasing in magnitude and strongly non-overlapping, whose exact sum is the
-/// value. Zero components are dropped, so the last component carries the sign.
+/// value. Zero components are dropped, so the last component carries the sign. Each stage has
+/// its own capacity (the most components it can reach), so no stage zeroes more memory than it
+/// can use.
 mod expansion {
-    /// The most components any expansion of [`exact_det`](super::exact_det) reaches: 48 terms
-    /// (24 triple products, two components each).
-    const CAPACITY: usize = 48;
-
-    /// A non-overlapping expansion of at most [`CAPACITY`] components.
+    /// A non-overlapping expansion of at most `N` components.
     #[derive(Clone, Copy)]
-    pub(super) struct Expansion {
-        components: [f64; CAPACITY],
+    pub(super) struct Expansion<const N: usize> {
+        components: [f64; N],
         len: usize,
     }
 
-    impl Default for Expansion {
-        fn default() -> Self {
+    impl<const N: usize> Expansion<N> {
+        pub(super) fn new() -> Self {
             Self {
-                components: [0.0; CAPACITY],
+                components: [0.0; N],
                 len: 0,
             }
         }
-    }
 
-    impl Expansion {
         fn as_slice(&self) -> &[f64] {
             &self.components[..self.len]
         }
 
         fn push(&mut self, x: f64) {
-            // Every caller stays within CAPACITY by construction (the term counts above); the
-            // guard only keeps an impossible overflow from panicking.
+            // Every caller stays within N by construction (the component counts in
+            // `exact_det`); the guard only keeps an impossible overflow from panicking.
             if let Some(slot) = self.components.get_mut(self.len) {
                 *slot = x;
                 self.len += 1;
@@ -195,9 +206,6 @@ mod expansion {
     }
 
     /// Veltkamp's split into two halves of at most 26 significant bits each, `a = hi + lo`.
-    /// (A fused multiply-add would do the two-product in two operations, but without a
-    /// hardware FMA `f64::mul_add` is a slow software routine; the split is portable and only
-    /// runs on the rare exact path.)
     #[inline]
     fn split(a: f64) -> (f64, f64) {
         const SPLITTER: f64 = 134_217_729.0; // 2^27 + 1
@@ -207,31 +215,35 @@ mod expansion {
         (hi, a - hi)
     }
 
-    /// Dekker's two-product: `a·b = p + e` exactly.
+    /// Dekker's two-product `a·b = p + e` exactly, for `b` an f32 value (at most 24 significant
+    /// bits, so it needs no split: `hi(a)·b` and `lo(a)·b` are exact). A fused multiply-add would
+    /// take two operations, but without a hardware FMA `f64::mul_add` is a slow software routine;
+    /// this is portable and only runs on the rare exact path.
     #[inline]
-    fn two_product(a: f64, b: f64) -> (f64, f64) {
+    fn two_product_f32(a: f64, b: f64) -> (f64, f64) {
         let p = a * b;
         let (ahi, alo) = split(a);
-        let (bhi, blo) = split(b);
-        let err1 = p - ahi * bhi;
-        let err2 = err1 - alo * bhi;
-        let err3 = err2 - ahi * blo;
-        (p, alo * blo - err3)
+        (p, alo * b - (p - ahi * b))
     }
 
-    /// `e · b` exactly (Shewchuk's `scale_expansion_zeroelim`).
-    pub(super) fn scale(e: &Expansion, b: f64) -> Expansion {
-        let mut h = Expansion::default();
+    /// `e · b` exactly for `b` an f32 value (Shewchuk's `scale_expansion_zeroelim`); at most
+    /// `2N` components.
+    pub(super) fn scale_by_f32<const N: usize, const M: usize>(
+        e: &Expansion<N>,
+        b: f32,
+    ) -> Expansion<M> {
+        let b = f64::from(b);
+        let mut h = Expansion::<M>::new();
         let mut parts = e.as_slice().iter();
         let Some(&first) = parts.next() else {
             return h;
         };
-        let (mut q, low) = two_product(first, b);
+        let (mut q, low) = two_product_f32(first, b);
         if low != 0.0 {
             h.push(low);
         }
         for &x in parts {
-            let (p1, p0) = two_product(x, b);
+            let (p1, p0) = two_product_f32(x, b);
             let (s, err) = two_sum(q, p0);
             if err != 0.0 {
                 h.push(err);
@@ -249,32 +261,34 @@ mod expansion {
     }
 
     /// `e + f` exactly (Shewchuk's `fast_expansion_sum_zeroelim`: merge by magnitude, then one
-    /// pass of two-sums).
-    pub(super) fn sum(e: &Expansion, f: &Expansion) -> Expansion {
+    /// pass of two-sums); at most `A + B` components.
+    pub(super) fn sum<const A: usize, const B: usize, const C: usize>(
+        e: &Expansion<A>,
+        f: &Expansion<B>,
+    ) -> Expansion<C> {
         let (e, f) = (e.as_slice(), f.as_slice());
-        let mut merged = [0.0f64; CAPACITY];
-        let n = (e.len() + f.len()).min(CAPACITY);
+        let mut h = Expansion::<C>::new();
         let (mut i, mut j) = (0, 0);
-        for slot in merged.iter_mut().take(n) {
+        // The merge is consumed on the fly: the next component in order of magnitude.
+        let mut next = || {
             let take_e = match (e.get(i), f.get(j)) {
                 (Some(x), Some(y)) => x.abs() <= y.abs(),
                 (Some(_), None) => true,
-                _ => false,
+                (None, Some(_)) => false,
+                (None, None) => return None,
             };
             if take_e {
-                *slot = e[i];
                 i += 1;
+                Some(e[i - 1])
             } else {
-                *slot = f[j];
                 j += 1;
+                Some(f[j - 1])
             }
-        }
-        let mut h = Expansion::default();
-        let Some((&first, rest)) = merged[..n].split_first() else {
+        };
+        let Some(mut q) = next() else {
             return h;
         };
-        let mut q = first;
-        for &x in rest {
+        while let Some(x) = next() {
             let (s, err) = two_sum(q, x);
             q = s;
             if err != 0.0 {

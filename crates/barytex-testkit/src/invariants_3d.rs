@@ -3,9 +3,10 @@
 
 use barytex_interp::{ConvexHull3d, Hull3dError, Orientation, convex_hull_3d, orient3d};
 use glam::Vec3;
+use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 
-use crate::exact::{self, Q, qf};
+use crate::exact;
 
 /// `orient3d(a, b, c, d)` is `None` exactly for non-finite input, else the exact rational sign,
 /// and it is antisymmetric (swapping `a` and `b` flips it, cycling `b, c, d` keeps it).
@@ -82,7 +83,28 @@ pub fn check_convex_hull_3d(points: &[Vec3]) -> Result<(), String> {
     Ok(())
 }
 
-type P3 = [Q; 3];
+/// Integers, not rationals: the brute force scales every coordinate by `2¹⁴⁹` (the f32 grid),
+/// so every determinant is an exact integer without any gcd normalisation.
+type Z = BigInt;
+type P3 = [Z; 3];
+
+/// `x · 2¹⁴⁹`, exactly an integer for every finite f32.
+fn scaled_integer(x: f32) -> Z {
+    let bits = x.to_bits();
+    let exponent = ((bits >> 23) & 0xff) as i32;
+    let fraction = bits & 0x7f_ffff;
+    let (mantissa, shift) = if exponent == 0 {
+        (fraction, 0)
+    } else {
+        (fraction | 0x80_0000, exponent - 1)
+    };
+    let magnitude = Z::from(mantissa) << shift as usize;
+    if bits >> 31 == 1 {
+        -magnitude
+    } else {
+        magnitude
+    }
+}
 
 fn sub(a: &P3, b: &P3) -> P3 {
     [&a[0] - &b[0], &a[1] - &b[1], &a[2] - &b[2]]
@@ -96,7 +118,7 @@ fn cross(a: &P3, b: &P3) -> P3 {
     ]
 }
 
-fn dot(a: &P3, b: &P3) -> Q {
+fn dot(a: &P3, b: &P3) -> Z {
     &a[0] * &b[0] + &a[1] * &b[1] + &a[2] * &b[2]
 }
 
@@ -104,7 +126,7 @@ fn is_zero(v: &P3) -> bool {
     v.iter().all(Zero::is_zero)
 }
 
-/// The strict corners of the hull of finite `points`, by brute force in exact rationals, sorted;
+/// The strict corners of the hull of finite `points`, by brute force in exact integers, sorted;
 /// of equal points the lowest index. Independent of `convex_hull_3d`: a triple spans a supporting
 /// plane when every point is on one side of it, and a point is a strict corner when the
 /// supporting planes through it have normals of rank 3. Coplanar inputs get an apex off their
@@ -124,7 +146,7 @@ pub fn reference_hull_vertices(points: &[Vec3]) -> Vec<usize> {
     }
     let mut qs: Vec<P3> = reps
         .iter()
-        .map(|&i| [qf(points[i].x), qf(points[i].y), qf(points[i].z)])
+        .map(|&i| [points[i].x, points[i].y, points[i].z].map(scaled_integer))
         .collect();
     if reps.len() <= 2 {
         return reps;
@@ -159,11 +181,17 @@ pub fn reference_hull_vertices(points: &[Vec3]) -> Vec<usize> {
     };
     let coplanar = qs.iter().all(|p| dot(&normal, &sub(p, &qs[0])).is_zero());
     let apex = coplanar.then(|| {
-        let n = qs.len();
-        let count = Q::from_integer(n.into());
-        let centroid: P3 =
-            std::array::from_fn(|k| qs.iter().map(|p| p[k].clone()).sum::<Q>() / &count);
-        std::array::from_fn(|k| &centroid[k] + &normal[k])
+        // The centroid plus the normal, in integers: scaling every point by n makes the
+        // centroid the (unscaled) sum.
+        let apex: P3 =
+            std::array::from_fn(|k| qs.iter().map(|p| p[k].clone()).sum::<Z>() + &normal[k]);
+        let count = Z::from(qs.len());
+        for p in &mut qs {
+            for c in p.iter_mut() {
+                *c *= &count;
+            }
+        }
+        apex
     });
     let real = qs.len();
     qs.extend(apex);
@@ -177,7 +205,7 @@ pub fn reference_hull_vertices(points: &[Vec3]) -> Vec<usize> {
                 if is_zero(&nrm) {
                     continue;
                 }
-                let sides: Vec<Q> = qs.iter().map(|p| dot(&nrm, &sub(p, &qs[i]))).collect();
+                let sides: Vec<Z> = qs.iter().map(|p| dot(&nrm, &sub(p, &qs[i]))).collect();
                 if sides.iter().all(|s| !s.is_positive()) {
                     supports.push((i, j, k, nrm));
                 } else if sides.iter().all(|s| !s.is_negative()) {
