@@ -66,7 +66,7 @@ pub enum ConvexHull3d {
 /// Why [`convex_hull_3d`] cannot answer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[non_exhaustive]
-pub enum Hull3dError {
+pub enum HullError3d {
     /// The point at `index` has a NaN or infinite coordinate (the first such point).
     NonFinite {
         /// Its position in the input.
@@ -79,7 +79,7 @@ pub enum Hull3dError {
     },
 }
 
-impl fmt::Display for Hull3dError {
+impl fmt::Display for HullError3d {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::NonFinite { index } => {
@@ -92,12 +92,12 @@ impl fmt::Display for Hull3dError {
     }
 }
 
-impl core::error::Error for Hull3dError {}
+impl core::error::Error for HullError3d {}
 
 /// A property that a [`ConvexHull3d`] fails for its input, found by [`ConvexHull3d::validate`].
 #[derive(Clone, Debug, PartialEq, Eq)]
 #[non_exhaustive]
-pub enum Hull3dDefect {
+pub enum HullDefect3d {
     /// An index is not an index of the input (or the input holds a non-finite point).
     BadIndex {
         /// The offending index.
@@ -151,7 +151,7 @@ pub enum Hull3dDefect {
     },
 }
 
-impl fmt::Display for Hull3dDefect {
+impl fmt::Display for HullDefect3d {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::BadIndex { index } => write!(f, "index {index} is not a finite input point"),
@@ -181,7 +181,7 @@ impl fmt::Display for Hull3dDefect {
     }
 }
 
-impl core::error::Error for Hull3dDefect {}
+impl core::error::Error for HullDefect3d {}
 
 /// The convex hull of `points`, exact: every visibility and coplanarity decision is an exact
 /// orientation sign, so the result is the true hull of the f32 input, with no tolerance.
@@ -192,8 +192,8 @@ impl core::error::Error for Hull3dDefect {}
 /// not depend on the input order. `O(n log n)` expected for points in general position.
 ///
 /// # Errors
-/// [`Hull3dError::NonFinite`] naming the first point with a NaN or infinite coordinate;
-/// [`Hull3dError::TooManyPoints`] beyond `u32::MAX` points.
+/// [`HullError3d::NonFinite`] naming the first point with a NaN or infinite coordinate;
+/// [`HullError3d::TooManyPoints`] beyond `u32::MAX` points.
 ///
 /// ```
 /// use barytex_interp::{convex_hull_3d, ConvexHull3d};
@@ -211,14 +211,14 @@ impl core::error::Error for Hull3dDefect {}
 ///
 /// let flat = [Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::new(0.2, 0.2, 0.0)];
 /// assert!(matches!(convex_hull_3d(&flat)?, ConvexHull3d::Polygon { .. }));
-/// # Ok::<(), barytex_interp::Hull3dError>(())
+/// # Ok::<(), barytex_interp::HullError3d>(())
 /// ```
-pub fn convex_hull_3d(points: &[Vec3]) -> Result<ConvexHull3d, Hull3dError> {
+pub fn convex_hull_3d(points: &[Vec3]) -> Result<ConvexHull3d, HullError3d> {
     if let Some(index) = points.iter().position(|p| !p.is_finite()) {
-        return Err(Hull3dError::NonFinite { index });
+        return Err(HullError3d::NonFinite { index });
     }
     if u32::try_from(points.len()).is_err() {
-        return Err(Hull3dError::TooManyPoints { len: points.len() });
+        return Err(HullError3d::TooManyPoints { len: points.len() });
     }
     let all: Vec<u32> = (0..points.len() as u32).collect();
     Ok(hull_of_subset(points, &all))
@@ -688,24 +688,24 @@ impl ConvexHull3d {
     /// Meant for tests and fuzzing: `O(n · F)` orientation tests.
     ///
     /// # Errors
-    /// The first [`Hull3dDefect`] found.
-    pub fn validate(&self, points: &[Vec3]) -> Result<(), Hull3dDefect> {
+    /// The first [`HullDefect3d`] found.
+    pub fn validate(&self, points: &[Vec3]) -> Result<(), HullDefect3d> {
         if let Some(index) = points.iter().position(|p| !p.is_finite()) {
-            return Err(Hull3dDefect::BadIndex { index });
+            return Err(HullDefect3d::BadIndex { index });
         }
         for &index in self.vertices().iter().chain(self.facets().iter().flatten()) {
             if index >= points.len() {
-                return Err(Hull3dDefect::BadIndex { index });
+                return Err(HullDefect3d::BadIndex { index });
             }
         }
         match self {
             Self::Empty => match points.len() {
                 0 => Ok(()),
-                _ => Err(Hull3dDefect::WrongKind { point: 0 }),
+                _ => Err(HullDefect3d::WrongKind { point: 0 }),
             },
             Self::Point { index } => match points.iter().position(|&p| p != points[*index]) {
                 None => Ok(()),
-                Some(point) => Err(Hull3dDefect::WrongKind { point }),
+                Some(point) => Err(HullDefect3d::WrongKind { point }),
             },
             Self::Segment { ends: [lo, hi] } => validate_segment(points, *lo, *hi),
             Self::Polygon {
@@ -717,15 +717,15 @@ impl ConvexHull3d {
     }
 }
 
-fn validate_segment(points: &[Vec3], lo: usize, hi: usize) -> Result<(), Hull3dDefect> {
+fn validate_segment(points: &[Vec3], lo: usize, hi: usize) -> Result<(), HullDefect3d> {
     let (a, b) = (points[lo], points[hi]);
     if lex(a, b) != Ordering::Less {
-        return Err(Hull3dDefect::WrongKind { point: hi });
+        return Err(HullDefect3d::WrongKind { point: hi });
     }
     for (i, &p) in points.iter().enumerate() {
         // Along a line, lexicographic order is the order along it.
         if !collinear(a, b, p) || lex(p, a) == Ordering::Less || lex(p, b) == Ordering::Greater {
-            return Err(Hull3dDefect::PointOutside {
+            return Err(HullDefect3d::PointOutside {
                 point: i,
                 facet: [lo, hi, hi],
             });
@@ -734,10 +734,10 @@ fn validate_segment(points: &[Vec3], lo: usize, hi: usize) -> Result<(), Hull3dD
     Ok(())
 }
 
-fn validate_polygon(points: &[Vec3], vertices: &[usize], axis: usize) -> Result<(), Hull3dDefect> {
+fn validate_polygon(points: &[Vec3], vertices: &[usize], axis: usize) -> Result<(), HullDefect3d> {
     let n = vertices.len();
     if n < 3 || axis > 2 {
-        return Err(Hull3dDefect::WrongKind { point: 0 });
+        return Err(HullDefect3d::WrongKind { point: 0 });
     }
     let proj = |i: usize| project(points[i], axis);
     let ccw = |a: usize, b: usize, c: usize| orient2d(proj(a), proj(b), proj(c));
@@ -747,13 +747,13 @@ fn validate_polygon(points: &[Vec3], vertices: &[usize], axis: usize) -> Result<
         // polygon winds once).
         let fan = k + 2 >= n || ccw(vertices[0], b, c) == Some(Orientation::CounterClockwise);
         if ccw(a, b, c) != Some(Orientation::CounterClockwise) || !fan {
-            return Err(Hull3dDefect::DegenerateFacet { facet: [a, b, c] });
+            return Err(HullDefect3d::DegenerateFacet { facet: [a, b, c] });
         }
     }
     let [a, b, c] = [0, 1, 2].map(|k| points[vertices[k]]);
     for (i, &p) in points.iter().enumerate() {
         if orient3d_sign_det(a, b, c, p) != 0.0 {
-            return Err(Hull3dDefect::PointOutside {
+            return Err(HullDefect3d::PointOutside {
                 point: i,
                 facet: [vertices[0], vertices[1], vertices[2]],
             });
@@ -761,7 +761,7 @@ fn validate_polygon(points: &[Vec3], vertices: &[usize], axis: usize) -> Result<
         for k in 0..n {
             let (u, w) = (vertices[k], vertices[(k + 1) % n]);
             if ccw(u, w, i) == Some(Orientation::Clockwise) {
-                return Err(Hull3dDefect::PointOutside {
+                return Err(HullDefect3d::PointOutside {
                     point: i,
                     facet: [u, w, w],
                 });
@@ -775,20 +775,20 @@ fn validate_polytope(
     points: &[Vec3],
     vertices: &[usize],
     facets: &[[usize; 3]],
-) -> Result<(), Hull3dDefect> {
+) -> Result<(), HullDefect3d> {
     let mut corners: Vec<usize> = facets.iter().flatten().copied().collect();
     corners.sort_unstable();
     corners.dedup();
     if corners.len() < 4 {
-        return Err(Hull3dDefect::WrongKind { point: 0 });
+        return Err(HullDefect3d::WrongKind { point: 0 });
     }
     if corners != vertices {
-        return Err(Hull3dDefect::VertexListMismatch);
+        return Err(HullDefect3d::VertexListMismatch);
     }
     for &f in facets {
         let [a, b, c] = f.map(|i| points[i]);
         if collinear(a, b, c) {
-            return Err(Hull3dDefect::DegenerateFacet { facet: f });
+            return Err(HullDefect3d::DegenerateFacet { facet: f });
         }
     }
     // Directed edges, sorted, each with the facet's third corner.
@@ -799,21 +799,21 @@ fn validate_polytope(
     edges.sort_unstable();
     for pair in edges.windows(2) {
         if pair[0].0 == pair[1].0 {
-            return Err(Hull3dDefect::EdgeNotShared { edge: pair[0].0 });
+            return Err(HullDefect3d::EdgeNotShared { edge: pair[0].0 });
         }
     }
     for &([u, w], x) in &edges {
         let Ok(k) = edges.binary_search_by(|e| e.0.cmp(&[w, u])) else {
-            return Err(Hull3dDefect::EdgeNotShared { edge: [u, w] });
+            return Err(HullDefect3d::EdgeNotShared { edge: [u, w] });
         };
         let y = edges[k].1;
         if orient3d_sign_det(points[u], points[w], points[x], points[y]) > 0.0 {
-            return Err(Hull3dDefect::ReflexEdge { edge: [u, w] });
+            return Err(HullDefect3d::ReflexEdge { edge: [u, w] });
         }
     }
     let (v, e, f) = (corners.len(), edges.len() / 2, facets.len());
     if v + f != e + 2 {
-        return Err(Hull3dDefect::Euler {
+        return Err(HullDefect3d::Euler {
             vertices: v,
             edges: e,
             facets: f,
@@ -825,7 +825,7 @@ fn validate_polytope(
             .iter()
             .position(|&p| orient3d_sign_det(a, b, c, p) > 0.0)
         {
-            return Err(Hull3dDefect::PointOutside { point, facet });
+            return Err(HullDefect3d::PointOutside { point, facet });
         }
     }
     let facets32: Vec<[u32; 3]> = facets.iter().map(|f| f.map(|i| i as u32)).collect();
@@ -836,7 +836,7 @@ fn validate_polytope(
         .zip(strict.iter().chain(core::iter::repeat(&u32::MAX)))
         .find(|(v, s)| v != s)
     {
-        Some((&vertex, _)) => Err(Hull3dDefect::NotStrictCorner {
+        Some((&vertex, _)) => Err(HullDefect3d::NotStrictCorner {
             vertex: vertex as usize,
         }),
         None => Ok(()),

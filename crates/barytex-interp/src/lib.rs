@@ -10,13 +10,13 @@
 //! | checked weights | [`AffineCombination`], [`ConvexCombination`] |
 //! | exact orientation | [`orient2d`], [`Orientation`] |
 //! | exact 3D orientation | [`orient3d`] |
-//! | 3D convex hull | [`convex_hull_3d`], [`ConvexHull3d`], [`Hull3dError`], [`Hull3dDefect`] |
 //! | barycentric coordinates | [`barycentric_2d`], [`locate_2d`], [`Location`], [`barycentric_3d`], [`methods`] |
-//! | quads and cubes | [`bilinear`], [`inverse_bilinear_2d`], [`inverse_bilinear_3d`], [`trilinear`] |
-//! | spherical interpolation | [`slerp_vec3`], [`slerp_quat`], [`QuatInterpolation`], [`interpolate_normal`] (module docs of the SLERP family: [`QuatInterpolation`]) |
 //! | convex polygons (generalized barycentric) | [`wachspress_weights`], [`mean_value_weights`], [`GeneralizedBarycentric`], [`interpolate_polygon`], [`PolygonLocation`], [`PolygonError`] |
-//! | 2D convex hull (exact) | [`convex_hull_2d`], [`ConvexHull2d`], [`CollinearPoints`], [`HullShape2d`], [`HullError2d`], [`HullDefect2d`] |
+//! | quads and cubes | [`bilinear`], [`inverse_bilinear_2d`], [`inverse_bilinear_3d`], [`trilinear`] |
 //! | projective space | [`Homogeneous3`], [`perspective_correct_weights`], [`perspective_interpolate`] |
+//! | spherical interpolation | [`slerp_vec3`] (and `_vec2`, `_vec3a`, `_vec4`, `_dvec*`), [`slerp_quat`], [`slerp_dquat`], [`QuatPath`], the fast [`nlerp_quat`], [`nlerp_corrected_quat`], [`slerp_eberly_quat`] behind [`QuatInterpolation`], normals by [`interpolate_normal`] |
+//! | 2D convex hull (exact) | [`convex_hull_2d`], [`ConvexHull2d`], [`CollinearPoints`], [`HullShape2d`], [`HullError2d`], [`HullDefect2d`] |
+//! | 3D convex hull | [`convex_hull_3d`], [`ConvexHull3d`], [`HullError3d`], [`HullDefect3d`] |
 //!
 //! Conventions: f32 on the data path, f64 or exact arithmetic inside predicates and solvers;
 //! orientation signs are those of the determinant `(b − a) × (c − a)` in a y-up frame. Nothing
@@ -75,7 +75,7 @@ pub use homogeneous::Homogeneous3;
 pub use hull2d::{
     CollinearPoints, ConvexHull2d, HullDefect2d, HullError2d, HullShape2d, convex_hull_2d,
 };
-pub use hull3d::{ConvexHull3d, Hull3dDefect, Hull3dError, convex_hull_3d};
+pub use hull3d::{ConvexHull3d, HullDefect3d, HullError3d, convex_hull_3d};
 pub use interpolate::{Interpolate, interpolate3};
 pub use inverse_bilinear::{InverseBilinear, inverse_bilinear_2d, inverse_bilinear_3d};
 pub use lerp::{inverse_lerp, lerp, lerp_f64, segment_parameter_2d, segment_parameter_3d};

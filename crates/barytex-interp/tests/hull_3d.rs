@@ -4,7 +4,7 @@
 #![allow(clippy::unwrap_used, missing_docs)]
 
 use barytex_interp::hard_cases::hulls_3d;
-use barytex_interp::{ConvexHull3d, Hull3dDefect, Hull3dError, convex_hull_3d};
+use barytex_interp::{ConvexHull3d, HullDefect3d, HullError3d, convex_hull_3d};
 use barytex_testkit::exact;
 use barytex_testkit::invariants_3d::{
     BRUTE_FORCE_MAX_POINTS, check_convex_hull_3d, reference_hull_vertices, sorted_vertices,
@@ -273,7 +273,7 @@ fn non_finite_input_names_the_point() {
         let points = [Vec3::ZERO, Vec3::X, Vec3::new(0.0, v, 0.0), Vec3::splat(v)];
         assert_eq!(
             convex_hull_3d(&points),
-            Err(Hull3dError::NonFinite { index: 2 })
+            Err(HullError3d::NonFinite { index: 2 })
         );
         check_convex_hull_3d(&points).unwrap();
     }
@@ -304,7 +304,7 @@ fn validate_finds_defects() {
     };
     assert!(matches!(
         hull.validate(&more),
-        Err(Hull3dDefect::PointOutside { point: 8, .. })
+        Err(HullDefect3d::PointOutside { point: 8, .. })
     ));
     // A face centre made a vertex (flat): fan the bottom face around it.
     let mut flat = cube.clone();
@@ -327,11 +327,11 @@ fn validate_finds_defects() {
     };
     assert_eq!(
         flat_hull.validate(&flat),
-        Err(Hull3dDefect::NotStrictCorner { vertex: 8 })
+        Err(HullDefect3d::NotStrictCorner { vertex: 8 })
     );
     assert_eq!(
         ConvexHull3d::Point { index: 0 }.validate(&cube),
-        Err(Hull3dDefect::WrongKind { point: 1 })
+        Err(HullDefect3d::WrongKind { point: 1 })
     );
 }
 

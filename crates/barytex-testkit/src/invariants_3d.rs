@@ -1,7 +1,7 @@
 //! Invariant checks of `orient3d` and the 3D convex hull, shared by property tests and the fuzz
 //! target: each returns `Err(description)` rather than panicking.
 
-use barytex_interp::{ConvexHull3d, Hull3dError, Orientation, convex_hull_3d, orient3d};
+use barytex_interp::{ConvexHull3d, HullError3d, Orientation, convex_hull_3d, orient3d};
 use glam::Vec3;
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
@@ -57,7 +57,7 @@ pub fn check_convex_hull_3d(points: &[Vec3]) -> Result<(), String> {
     let got = convex_hull_3d(points);
     if let Some(index) = points.iter().position(|p| !p.is_finite()) {
         return match got {
-            Err(Hull3dError::NonFinite { index: i }) if i == index => Ok(()),
+            Err(HullError3d::NonFinite { index: i }) if i == index => Ok(()),
             other => Err(format!(
                 "point {index} is not finite, but convex_hull_3d answered {other:?}"
             )),
