@@ -13,6 +13,7 @@
 
 use glam::{DQuat, DVec2, DVec3, DVec4, Quat, Vec2, Vec3, Vec3A, Vec4};
 
+use super::short_arc::slerp_short_arc;
 use super::trig::{Libm, Poly, Trig, select};
 use super::unit_vector::{Ops, unit};
 #[allow(unused_imports)] // the doc links of the generated functions
@@ -105,9 +106,10 @@ fn try_slerp_f64<V: Ops<Scalar = f64>>(a: V, b: V, t: f64) -> Option<V> {
 }
 
 /// The checked f32 entry: normalized in f32 (so unit inputs keep their bits and the endpoints
-/// are exact), computed in f64 with the polynomial trigonometry, rounded once at the end.
+/// are exact), computed in f64 — arcs up to 90° with `t ∈ [0, 1]` by the series of
+/// [`slerp_short_arc`], others with the polynomial trigonometry — and rounded once at the end.
 #[inline]
-fn try_slerp_f32<V: Ops<Scalar = f32>, W: Ops<Scalar = f64>>(
+fn try_slerp_f32<V: Ops<Scalar = f32> + PartialEq, W: Ops<Scalar = f64>>(
     a: V,
     b: V,
     t: f32,
@@ -118,12 +120,18 @@ fn try_slerp_f32<V: Ops<Scalar = f32>, W: Ops<Scalar = f64>>(
         return None;
     }
     let (a, b) = (unit(a)?, unit(b)?);
-    Some(if t == 0.0 {
+    // Equal inputs: the arc is a point (the series would round it to a neighbour).
+    Some(if t == 0.0 || a == b {
         a
     } else if t == 1.0 {
         b
     } else {
-        narrow(slerp_unit::<W, Poly>(widen(a), widen(b), f64::from(t)))
+        let (a, b, t) = (widen(a), widen(b), f64::from(t));
+        narrow(if t > 0.0 && t < 1.0 && a.dot(b) >= 0.0 {
+            slerp_short_arc(a, b, t)
+        } else {
+            slerp_unit::<W, Poly>(a, b, t)
+        })
     })
 }
 

@@ -13,6 +13,7 @@ mod exact;
 mod method;
 mod nlerp;
 mod normals;
+mod short_arc;
 mod trig;
 mod unit_vector;
 
