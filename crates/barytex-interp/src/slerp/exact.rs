@@ -141,10 +141,13 @@ macro_rules! vector_slerp {
         ///
         /// Returns the point at fraction `t` of the great-circle arc from `a` to `b`:
         /// `a` at `t = 0` and `b` at `t = 1` bit for bit, constant angular speed in between, and
-        /// `t` outside `[0, 1]` continues along the same great circle (extrapolation). The angle is
-        /// computed as `2·atan2(|b − a|, |b + a|)`, accurate at every angle; the arc is written in
-        /// its orthonormal frame, so nearly opposite vectors stay on the unit sphere (glam's
-        /// `Vec3::slerp` loses up to 18 % of the length within 0.06° of opposite).
+        /// `t` outside `[0, 1]` continues along the same great circle (extrapolation). The arc is
+        /// written in its orthonormal frame, `cos(tθ)·a + sin(tθ)·p̂` with `p` the part of `b`
+        /// perpendicular to `a` and `θ = atan2(|p|, a·b)`, accurate at every angle, so nearly
+        /// opposite vectors stay on the unit sphere (glam's `Vec3::slerp` loses up to 18 % of the
+        /// length within 0.06° of opposite). The f32 functions compute in f64; arcs up to 90° with
+        /// `t ∈ [0, 1]` use Eberly's series with 16 balanced factors, whose error is below the
+        /// f32 rounding of the result.
         ///
         /// Inputs that are not unit length are normalized first (inputs within `4·ε` of unit
         /// squared length are used as given, so the endpoints stay exact); huge and tiny vectors
@@ -258,9 +261,9 @@ macro_rules! quat_slerp {
         /// With [`QuatPath::Shortest`] `b` is negated when `a·b < 0` (then `t = 1` returns `−b`
         /// exactly); with [`QuatPath::AsGiven`] the 4-vectors are interpolated as they are.
         /// `t` outside `[0, 1]` extrapolates along the same great circle, also for nearly equal
-        /// rotations (glam #356). The algorithm is that of [`slerp_vec4`]: the angle by
-        /// `2·atan2(|b − a|, |b + a|)` and the arc in its orthonormal frame, so there is no
-        /// `acos` near 1 and no threshold switching to nlerp.
+        /// rotations (glam #356). The algorithm is that of [`slerp_vec4`]: the arc in its
+        /// orthonormal frame with `θ = atan2(|p|, a·b)` (f32: the short arc by Eberly's balanced
+        /// series in f64), so there is no `acos` near 1 and no threshold switching to nlerp.
         ///
         /// # Special values
         /// - Non-unit inputs are normalized first (inputs within `4·ε` of unit squared length are
