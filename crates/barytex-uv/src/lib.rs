@@ -1,0 +1,52 @@
+//! UV parameterization for texturing: every mapping returns texture coordinates **together with
+//! their derivatives**, so a sampler can pick a mip level (pbrt's chain: surface point → mapping
+//! → sampler).
+//!
+//! | concept | items |
+//! |---|---|
+//! | the seam | [`UvMapping`], [`SurfacePoint`], [`UvJacobian`], [`UvSample`] |
+//! | object-space mappings | [`mappings`] |
+//! | environment maps | [`environment`] |
+//! | parametric meshes | [`mesh`] |
+//! | distortion | [`distortion`] |
+//!
+//! Conventions: uv (0, 0) is the top-left of the image (glTF), `u` to the right, `v` down;
+//! angles in radians; right-handed, y-up object space. Nothing panics on NaN, infinite or
+//! degenerate input: mappings return `None`, constructors a [`UvError`].
+//!
+//! ```
+//! use barytex_uv::{SurfacePoint, UvJacobian, UvMapping};
+//! use glam::{Vec2, Vec3};
+//!
+//! /// The xz plane, one texture repeat per 2 units.
+//! struct Floor;
+//!
+//! impl UvMapping for Floor {
+//!     fn uv_and_jacobian(&self, p: Vec3, _normal: Vec3) -> Option<UvJacobian> {
+//!         p.is_finite().then(|| UvJacobian {
+//!             uv: Vec2::new(p.x, p.z) / 2.0,
+//!             du: Vec3::X / 2.0,
+//!             dv: Vec3::Z / 2.0,
+//!         })
+//!     }
+//! }
+//!
+//! // A pixel step of 0.1 along x moves u by 0.05.
+//! let point = SurfacePoint::with_derivatives(Vec3::new(1.0, 0.0, 0.5), Vec3::Y, Vec3::X * 0.1, Vec3::Z * 0.1);
+//! let sample = Floor.map(&point).expect("finite");
+//! assert_eq!(sample.uv, Vec2::new(0.5, 0.25));
+//! assert_eq!(sample.duvdx, Vec2::new(0.05, 0.0));
+//! ```
+#![forbid(unsafe_code)]
+
+pub mod distortion;
+pub mod environment;
+mod error;
+#[cfg(feature = "layout")]
+pub mod layout;
+mod mapping;
+pub mod mappings;
+pub mod mesh;
+
+pub use error::UvError;
+pub use mapping::{SurfacePoint, UvJacobian, UvMapping, UvSample};
