@@ -124,8 +124,16 @@ impl Builder {
                     index(i, j + 1),
                     index(i + 1, j + 1),
                 );
-                self.triangle([p00, p01, p11]);
-                self.triangle([p00, p11, p10]);
+                let position = |i: u32| self.mesh.positions[i as usize];
+                if position(p01) == position(p11) {
+                    // A collapsed bottom edge (the south pole): one triangle, through this
+                    // column's own pole vertex so its uvs stay inside the column.
+                    self.triangle([p00, p01, p10]);
+                } else {
+                    // A collapsed top edge (the north pole) leaves only the first.
+                    self.triangle([p00, p01, p11]);
+                    self.triangle([p00, p11, p10]);
+                }
             }
         }
     }
