@@ -84,7 +84,7 @@ fn winding_is_counter_clockwise_outward() {
 fn no_triangle_spans_half_the_texture() {
     // From 6 segments on (a cap's fan triangle spans the chord sin(π/segments) of its disc of
     // radius 1/2, which is > 1/2 below 6).
-    for (a, b) in [(1, 1), (6, 2), (8, 4), (31, 15)] {
+    for (a, b) in [(2, 2), (6, 2), (8, 4), (31, 15)] {
         for (name, mesh, _) in all_meshes(a, b) {
             for &triangle in &mesh.indices {
                 let uv = corners(&mesh.uvs, triangle);
@@ -143,7 +143,7 @@ fn closed_surfaces_are_watertight_after_welding() {
 
 /// The largest angle between a vertex tangent and its triangle's `∂p/∂u`, for the resolutions
 /// tested, is below this multiple of the grid's angular step `max(2π/a, π/b)` (measured: 0.500,
-at the sphere's poles, where the pole vertex sits half a column from the rim's corners).
+/// at the sphere's poles, where the pole vertex sits half a column from the rim's corners).
 const TANGENT_ANGLE_PER_STEP: f32 = 0.51;
 
 #[test]
