@@ -3,8 +3,9 @@
 //!
 //! A **seam** edge is one whose two triangles disagree about the uvs at its two (welded,
 //! bit-equal) positions, or a boundary edge (one triangle), or a non-manifold edge (more than
-//! two): the texture is discontinuous across it, and each side's copy is drawn. The picture's
-//! `x` is `u·size` and its `y` is `v·size` (uv `(0, 0)` at the top-left, as glTF).
+//! two): the texture is discontinuous across it, and each side's copy is drawn. The uv square
+//! fills the picture inside a margin (so seams on its border show whole): `x` grows with `u`, `y`
+//! with `v` (uv `(0, 0)` at the top-left, as glTF); [`LayoutOptions::pixel`] gives the place.
 //!
 //! ```
 //! use barytex_uv::layout::{LayoutOptions, draw_uv_layout};
@@ -19,7 +20,7 @@ use std::path::Path;
 
 use glam::{Vec2, Vec3};
 use tiny_skia::{
-    Color, FilterQuality, Paint, PathBuilder, Pixmap, PixmapPaint, PremultipliedColorU8, Stroke,
+    Color, FilterQuality, LineCap, Paint, PathBuilder, Pixmap, PixmapPaint, PremultipliedColorU8, Stroke,
     Transform,
 };
 
@@ -46,10 +47,36 @@ pub struct LayoutOptions<'a> {
     pub wire_width: f32,
     /// Width of seam edges in pixels.
     pub seam_width: f32,
+    /// Pixels between the picture's border and the uv square (white there).
+    pub margin: u32,
+}
+
+impl LayoutOptions<'_> {
+    /// Where uv `uv` lands in a `size × size` picture (pixel units, `(0, 0)` the top-left
+    /// corner of the top-left pixel).
+    ///
+    /// ```
+    /// use barytex_uv::layout::LayoutOptions;
+    /// use glam::Vec2;
+    ///
+    /// let options = LayoutOptions { margin: 6, ..LayoutOptions::default() };
+    /// assert_eq!(options.pixel(Vec2::ZERO, 512), Vec2::splat(6.0));
+    /// assert_eq!(options.pixel(Vec2::ONE, 512), Vec2::splat(506.0));
+    /// ```
+    #[must_use]
+    pub fn pixel(&self, uv: Vec2, size: u32) -> Vec2 {
+        let margin = self.margin_for(size) as f32;
+        Vec2::splat(margin) + uv * (size as f32 - 2.0 * margin)
+    }
+
+    /// The margin, reduced so that at least one pixel of uv square remains.
+    fn margin_for(&self, size: u32) -> u32 {
+        self.margin.min(size.saturating_sub(1) / 2)
+    }
 }
 
 impl Default for LayoutOptions<'_> {
-    /// An 8 × 8 light-grey checker, dark-blue wire 1 px, red seams 2.5 px.
+    /// An 8 × 8 light-grey checker, dark-blue wire 1 px, red seams 2.5 px, a 6 px margin.
     fn default() -> Self {
         Self {
             texture: None,
@@ -62,6 +89,7 @@ impl Default for LayoutOptions<'_> {
             seam: Color::from_rgba8(220, 30, 30, 255),
             wire_width: 1.0,
             seam_width: 2.5,
+            margin: 6,
         }
     }
 }
@@ -134,8 +162,8 @@ fn premultiplied(color: Color) -> PremultipliedColorU8 {
     color.premultiply().to_color_u8()
 }
 
-/// Draws `mesh`'s uv layout into a `size × size` picture: the background (checker or
-/// `options.texture`), ordinary edges in `options.wire`, seam edges on top in `options.seam`.
+/// Draws `mesh`'s uv layout into a `size × size` picture: a white margin, the uv square's
+/// background (checker or `options.texture`), ordinary edges in `options.wire`, seam edges on top in `options.seam`.
 /// Edges with a non-finite uv are skipped.
 ///
 /// # Errors
@@ -186,9 +214,12 @@ pub fn draw_uv_layout(
         requested: u64::from(size),
         limit: u64::from(MAX_LAYOUT_SIZE),
     })?;
+    pixmap.fill(Color::WHITE);
+    let margin = options.margin_for(size);
+    let inner = size - 2 * margin;
     match options.texture {
         Some(texture) => {
-            let scale = |side: u32| size as f32 / side as f32;
+            let scale = |side: u32| inner as f32 / side as f32;
             pixmap.draw_pixmap(
                 0,
                 0,
@@ -197,22 +228,25 @@ pub fn draw_uv_layout(
                     quality: FilterQuality::Bilinear,
                     ..PixmapPaint::default()
                 },
-                Transform::from_scale(scale(texture.width()), scale(texture.height())),
+                Transform::from_scale(scale(texture.width()), scale(texture.height()))
+                    .post_translate(margin as f32, margin as f32),
                 None,
             );
         }
         None => {
             let colours = options.checker.map(premultiplied);
-            let cells = u64::from(options.checker_cells.min(size));
-            for (index, pixel) in pixmap.pixels_mut().iter_mut().enumerate() {
-                let (x, y) = (index as u64 % u64::from(size), index as u64 / u64::from(size));
-                let parity = (x * cells / u64::from(size) + y * cells / u64::from(size)) % 2;
-                *pixel = colours[usize::from(parity == 1)];
+            let cells = u64::from(options.checker_cells.min(inner));
+            let cell = |i: u32| u64::from(i - margin) * cells / u64::from(inner);
+            let pixels = pixmap.pixels_mut();
+            for y in margin..margin + inner {
+                for x in margin..margin + inner {
+                    let parity = (cell(x) + cell(y)) % 2;
+                    pixels[(y * size + x) as usize] = colours[usize::from(parity == 1)];
+                }
             }
         }
     }
     let edges = uv_edges(mesh);
-    let scale = size as f32;
     for (segments, colour, width) in [
         (&edges.wire, options.wire, options.wire_width),
         (&edges.seams, options.seam, options.seam_width),
@@ -220,8 +254,9 @@ pub fn draw_uv_layout(
         let mut path = PathBuilder::new();
         for &[a, b] in segments {
             if a.is_finite() && b.is_finite() {
-                path.move_to(a.x * scale, a.y * scale);
-                path.line_to(b.x * scale, b.y * scale);
+                let (a, b) = (options.pixel(a, size), options.pixel(b, size));
+                path.move_to(a.x, a.y);
+                path.line_to(b.x, b.y);
             }
         }
         let Some(path) = path.finish() else {
@@ -230,8 +265,10 @@ pub fn draw_uv_layout(
         let mut paint = Paint::default();
         paint.set_color(colour);
         paint.anti_alias = true;
+        // Round caps close the corners where seam segments meet at an angle.
         let stroke = Stroke {
             width,
+            line_cap: LineCap::Round,
             ..Stroke::default()
         };
         pixmap.stroke_path(&path, &paint, &stroke, Transform::identity(), None);

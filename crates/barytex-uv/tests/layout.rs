@@ -5,10 +5,14 @@
 use barytex_uv::UvError;
 use barytex_uv::layout::{LayoutOptions, MAX_LAYOUT_SIZE, draw_uv_layout, uv_edges};
 use barytex_uv::mesh;
+use glam::Vec2;
 use tiny_skia::{Color, Pixmap};
 
-fn is_seam_red(picture: &Pixmap, x: u32, y: u32) -> bool {
-    let p = picture.pixel(x, y).expect("inside").demultiply();
+/// Whether the pixel under uv `uv` is (mostly) the seam colour.
+fn is_seam_red(picture: &Pixmap, uv: Vec2) -> bool {
+    // The pixel whose centre is nearest, on the uv square's side at its far borders.
+    let at = (LayoutOptions::default().pixel(uv, picture.width()) - 0.5).floor();
+    let p = picture.pixel(at.x as u32, at.y as u32).expect("inside").demultiply();
     p.red() > 150 && p.green() < 110 && p.blue() < 110
 }
 
@@ -29,19 +33,25 @@ fn cube_atlas_seams_are_drawn_in_the_seam_colour() {
     let size = 384;
     let picture = draw_uv_layout(&cube, size, &LayoutOptions::default()).expect("drawn");
     // The atlas cells meet at u = 1/3, 2/3 and v = 1/2: seams (each face has its own vertices).
-    for y in (10..size - 10).step_by(7) {
-        assert!(is_seam_red(&picture, size / 3, y), "x = {}, y = {y}", size / 3);
-        assert!(is_seam_red(&picture, 2 * size / 3, y), "y = {y}");
-    }
-    for x in (10..size - 10).step_by(7) {
-        assert!(is_seam_red(&picture, x, size / 2), "x = {x}");
+    for i in 0..=50 {
+        let t = i as f32 / 50.0;
+        for uv in [Vec2::new(1.0 / 3.0, t), Vec2::new(2.0 / 3.0, t), Vec2::new(t, 0.5)] {
+            assert!(is_seam_red(&picture, uv), "{uv}");
+        }
+        // The border of the uv square is a seam too, drawn whole inside the margin.
+        for uv in [Vec2::new(0.0, t), Vec2::new(1.0, t), Vec2::new(t, 0.0), Vec2::new(t, 1.0)] {
+            assert!(is_seam_red(&picture, uv), "{uv}");
+        }
     }
     // Away from every edge, the checker's colours (in a cell between grid lines).
-    let background = |x, y| picture.pixel(x, y).expect("inside").demultiply();
-    for (x, y) in [(20, 40), (150, 100), (300, 300)] {
-        let p = background(x, y);
-        assert!([236, 204].contains(&p.red()) && p.red() == p.green(), "({x}, {y}): {p:?}");
+    for uv in [Vec2::new(0.05, 0.12), Vec2::new(0.4, 0.27), Vec2::new(0.8, 0.8)] {
+        let at = LayoutOptions::default().pixel(uv, size);
+        let p = picture.pixel(at.x as u32, at.y as u32).expect("inside").demultiply();
+        assert!([236, 204].contains(&p.red()) && p.red() == p.green(), "{uv}: {p:?}");
     }
+    // The margin is white.
+    let corner = picture.pixel(1, 1).expect("inside").demultiply();
+    assert_eq!((corner.red(), corner.green(), corner.blue()), (255, 255, 255));
 }
 
 #[test]
@@ -81,10 +91,11 @@ fn a_caller_texture_replaces_the_checker() {
     };
     let plane = mesh::plane(2, 2).expect("valid");
     let picture = draw_uv_layout(&plane, 64, &options).expect("drawn");
-    let p = picture.pixel(20, 12).expect("inside").demultiply();
+    let p = picture.pixel(22, 14).expect("inside").demultiply();
     assert_eq!((p.red(), p.green(), p.blue()), (10, 200, 10));
     // The plane's border is a seam (boundary edges).
-    assert!(is_seam_red(&picture, 32, 0) || is_seam_red(&picture, 32, 1));
+    assert!(is_seam_red(&picture, Vec2::new(0.5, 0.0)));
+    assert!(is_seam_red(&picture, Vec2::new(1.0, 0.3)));
 }
 
 #[test]

@@ -4,10 +4,13 @@
 //!   against exact arithmetic, until the renderer exists.
 //! - `barytex report [--out DIR] [--quick]`: the speed-vs-error report of the interpolation
 //!   methods, written as Markdown (`DIR/README.md`, `DIR/interp.md`; default `docs/report`).
+//! - `barytex uv-layout --mesh sphere|equal-area-sphere|torus|cylinder|cube|plane [--size N]
+//!   [--out FILE.png]`: a parametric mesh's uv layout (default `docs/uv-layout/<mesh>.png`).
 
 mod demo;
 mod report;
 mod timing;
+mod uv_layout;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -30,6 +33,22 @@ struct Cli {
 enum Command {
     /// Measure every method's speed and error on the same inputs and write the Markdown report.
     Report(ReportArgs),
+    /// Draw a parametric mesh's uv layout (wireframe over a checker, seams in red) to a PNG.
+    UvLayout(UvLayoutArgs),
+}
+
+/// Options of `barytex uv-layout`.
+#[derive(Debug, Args)]
+struct UvLayoutArgs {
+    /// Which mesh.
+    #[arg(long, value_enum)]
+    mesh: uv_layout::MeshKind,
+    /// Picture side in pixels (1 to 8192).
+    #[arg(long, default_value_t = 512)]
+    size: u32,
+    /// The PNG to write (default `docs/uv-layout/<mesh>.png`).
+    #[arg(long)]
+    out: Option<PathBuf>,
 }
 
 /// Options of `barytex report`.
@@ -59,6 +78,11 @@ fn main() -> ExitCode {
             out: args.out,
             quick: args.quick,
             command: command_line(),
+        }),
+        Some(Command::UvLayout(args)) => uv_layout::run(&uv_layout::Options {
+            mesh: args.mesh,
+            size: args.size,
+            out: args.out,
         }),
     };
     match result {

@@ -1,0 +1,78 @@
+//! `barytex uv-layout`: draws a parametric mesh's uv layout (wireframe over a checker, seams in
+//! red) to a PNG.
+
+use std::path::PathBuf;
+
+use barytex_uv::layout::{LayoutOptions, draw_uv_layout, write_png};
+use barytex_uv::mesh::{self, Mesh};
+use barytex_uv::UvError;
+use clap::ValueEnum;
+
+/// The meshes `uv-layout` can draw, at the resolutions of the pictures in `docs/uv-layout`.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub(crate) enum MeshKind {
+    /// `sphere(32, 16)`, equirectangular.
+    Sphere,
+    /// `sphere_with(32, 16, EqualArea)`.
+    EqualAreaSphere,
+    /// `torus(32, 16, 1.0, 0.4)`.
+    Torus,
+    /// `cylinder(24, 4, caps)`.
+    Cylinder,
+    /// `cube(4)`, the 3 × 2 atlas.
+    Cube,
+    /// `plane(8, 8)`.
+    Plane,
+}
+
+impl MeshKind {
+    fn build(self) -> Result<Mesh, UvError> {
+        match self {
+            Self::Sphere => mesh::sphere(32, 16),
+            Self::EqualAreaSphere => mesh::sphere_with(32, 16, mesh::SphereUv::EqualArea),
+            Self::Torus => mesh::torus(32, 16, 1.0, 0.4),
+            Self::Cylinder => mesh::cylinder(24, 4, true),
+            Self::Cube => mesh::cube(4),
+            Self::Plane => mesh::plane(8, 8),
+        }
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            Self::Sphere => "sphere",
+            Self::EqualAreaSphere => "equal-area-sphere",
+            Self::Torus => "torus",
+            Self::Cylinder => "cylinder",
+            Self::Cube => "cube",
+            Self::Plane => "plane",
+        }
+    }
+}
+
+/// What `uv-layout` was asked for.
+pub(crate) struct Options {
+    pub(crate) mesh: MeshKind,
+    pub(crate) size: u32,
+    pub(crate) out: Option<PathBuf>,
+}
+
+/// Draws the picture and writes it (default `docs/uv-layout/<mesh>.png`), printing where.
+pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
+    let mesh = options.mesh.build()?;
+    let picture = draw_uv_layout(&mesh, options.size, &LayoutOptions::default())?;
+    let out = options.out.clone().unwrap_or_else(|| {
+        PathBuf::from(format!("docs/uv-layout/{}.png", options.mesh.name()))
+    });
+    if let Some(parent) = out.parent().filter(|p| !p.as_os_str().is_empty()) {
+        std::fs::create_dir_all(parent)?;
+    }
+    write_png(&picture, &out)?;
+    println!(
+        "wrote {} ({}×{}, {} triangles)",
+        out.display(),
+        options.size,
+        options.size,
+        mesh.indices.len()
+    );
+    Ok(())
+}
