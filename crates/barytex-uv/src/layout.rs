@@ -20,8 +20,8 @@ use std::path::Path;
 
 use glam::{Vec2, Vec3};
 use tiny_skia::{
-    Color, FilterQuality, LineCap, Paint, PathBuilder, Pixmap, PixmapPaint, PremultipliedColorU8, Stroke,
-    Transform,
+    Color, FilterQuality, LineCap, Paint, PathBuilder, Pixmap, PixmapPaint, PremultipliedColorU8,
+    Stroke, Transform,
 };
 
 use crate::UvError;
@@ -152,7 +152,8 @@ pub fn uv_edges(mesh: &Mesh) -> UvEdges {
     // Deterministic pictures and tests: the map's order is not.
     let order = |e: &[Vec2; 2]| [e[0].x, e[0].y, e[1].x, e[1].y];
     let by_order = |x: &[Vec2; 2], y: &[Vec2; 2]| order(x).partial_cmp(&order(y));
-    let compare = |x: &[Vec2; 2], y: &[Vec2; 2]| by_order(x, y).unwrap_or(core::cmp::Ordering::Equal);
+    let compare =
+        |x: &[Vec2; 2], y: &[Vec2; 2]| by_order(x, y).unwrap_or(core::cmp::Ordering::Equal);
     result.wire.sort_by(compare);
     result.seams.sort_by(compare);
     result
@@ -190,7 +191,10 @@ pub fn draw_uv_layout(
             limit: u64::from(MAX_LAYOUT_SIZE),
         });
     }
-    for (what, value) in [("layout size", size), ("checker cells", options.checker_cells)] {
+    for (what, value) in [
+        ("layout size", size),
+        ("checker cells", options.checker_cells),
+    ] {
         if value == 0 {
             return Err(UvError::OutOfRange { what, value: 0.0 });
         }

@@ -7,8 +7,9 @@
 //! | the seam | [`UvMapping`], [`SurfacePoint`], [`UvJacobian`], [`UvSample`] |
 //! | object-space mappings | [`mappings`] |
 //! | environment maps | [`environment`] |
-//! | parametric meshes | [`mesh`] |
-//! | distortion | [`distortion`] |
+//! | parametric meshes | [`mesh`]: [`Mesh`], [`mesh::plane`], [`mesh::cube`], [`mesh::cylinder`], [`mesh::sphere`], [`mesh::torus`] |
+//! | distortion | [`distortion`]: [`MeshDistortion`], [`TriangleDistortion`], [`distortion::singular_values`] |
+//! | uv-layout pictures (feature `layout`) | `layout::draw_uv_layout`, `layout::uv_edges` |
 //!
 //! Conventions: uv (0, 0) is the top-left of the image (glTF), `u` to the right, `v` down;
 //! angles in radians; right-handed, y-up object space. Nothing panics on NaN, infinite or
@@ -48,5 +49,7 @@ mod mapping;
 pub mod mappings;
 pub mod mesh;
 
+pub use distortion::{MeshDistortion, TriangleDistortion};
 pub use error::UvError;
 pub use mapping::{SurfacePoint, UvJacobian, UvMapping, UvSample};
+pub use mesh::{Mesh, MeshDefect};

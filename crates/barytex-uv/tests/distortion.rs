@@ -73,7 +73,10 @@ proptest! {
 #[test]
 fn degenerate_triangles_are_refused() {
     let uv = [Vec2::ZERO, Vec2::X, Vec2::Y];
-    assert_eq!(triangle_distortion([Vec3::ZERO, Vec3::X, Vec3::X * 2.0], uv), None);
+    assert_eq!(
+        triangle_distortion([Vec3::ZERO, Vec3::X, Vec3::X * 2.0], uv),
+        None
+    );
     assert_eq!(triangle_distortion([Vec3::ZERO; 3], uv), None);
     assert_eq!(triangle_distortion([Vec3::NAN, Vec3::X, Vec3::Y], uv), None);
     // A degenerate uv triangle is measurable: infinite angle distortion, zero area.
@@ -111,7 +114,8 @@ fn equal_area_sphere_beats_equirectangular() {
             MeshDistortion::of(&mesh::sphere_with(segments, rings, uv).expect("valid"))
                 .expect("measurable")
         };
-        let (equirectangular, equal_area) = (of(SphereUv::Equirectangular), of(SphereUv::EqualArea));
+        let (equirectangular, equal_area) =
+            (of(SphereUv::Equirectangular), of(SphereUv::EqualArea));
         println!(
             "sphere {segments}×{rings}: area distortion mean/max equirectangular {:.4}/{:.2}, \
              equal-area {:.4}/{:.2} (closed form {expected:.4}); angle mean equirectangular \
@@ -128,7 +132,10 @@ fn equal_area_sphere_beats_equirectangular() {
         // ≈ 1.6/rings (the two halves of a trapezoidal quad share its uv area equally but not its
         // surface area; the pole fans get half their quads' uv area).
         let discretization = 2.0 / f64::from(rings);
-        assert!(equal_area.area_mean - 1.0 < discretization, "{equal_area:?}");
+        assert!(
+            equal_area.area_mean - 1.0 < discretization,
+            "{equal_area:?}"
+        );
         assert!(
             (equirectangular.area_mean - expected).abs() < discretization,
             "{equirectangular:?}"
@@ -142,7 +149,9 @@ fn equal_area_sphere_beats_equirectangular() {
 #[test]
 fn equirectangular_area_distortion_grows_toward_the_poles() {
     let sphere = mesh::sphere(64, 32).expect("valid");
-    let mean = MeshDistortion::of(&sphere).expect("measurable").mean_area_ratio;
+    let mean = MeshDistortion::of(&sphere)
+        .expect("measurable")
+        .mean_area_ratio;
     // Mean area distortion per band of latitude, equator to pole (northern hemisphere).
     let mut bands = vec![(0.0, 0.0); 16];
     for &corners in &sphere.indices {
@@ -158,7 +167,11 @@ fn equirectangular_area_distortion_grows_toward_the_poles() {
         entry.0 += area_distortion(d.area_ratio(), mean) * d.area_3d;
         entry.1 += d.area_3d;
     }
-    let means: Vec<f64> = bands.iter().filter(|b| b.1 > 0.0).map(|b| b.0 / b.1).collect();
+    let means: Vec<f64> = bands
+        .iter()
+        .filter(|b| b.1 > 0.0)
+        .map(|b| b.0 / b.1)
+        .collect();
     // Past the crossover (cos φ = 2/π, about 50°) it rises monotonically.
     let past = &means[means.len() / 2..];
     assert!(past.windows(2).all(|w| w[1] > w[0]), "{means:?}");

@@ -12,7 +12,10 @@ use tiny_skia::{Color, Pixmap};
 fn is_seam_red(picture: &Pixmap, uv: Vec2) -> bool {
     // The pixel whose centre is nearest, on the uv square's side at its far borders.
     let at = (LayoutOptions::default().pixel(uv, picture.width()) - 0.5).floor();
-    let p = picture.pixel(at.x as u32, at.y as u32).expect("inside").demultiply();
+    let p = picture
+        .pixel(at.x as u32, at.y as u32)
+        .expect("inside")
+        .demultiply();
     p.red() > 150 && p.green() < 110 && p.blue() < 110
 }
 
@@ -35,23 +38,45 @@ fn cube_atlas_seams_are_drawn_in_the_seam_colour() {
     // The atlas cells meet at u = 1/3, 2/3 and v = 1/2: seams (each face has its own vertices).
     for i in 0..=50 {
         let t = i as f32 / 50.0;
-        for uv in [Vec2::new(1.0 / 3.0, t), Vec2::new(2.0 / 3.0, t), Vec2::new(t, 0.5)] {
+        for uv in [
+            Vec2::new(1.0 / 3.0, t),
+            Vec2::new(2.0 / 3.0, t),
+            Vec2::new(t, 0.5),
+        ] {
             assert!(is_seam_red(&picture, uv), "{uv}");
         }
         // The border of the uv square is a seam too, drawn whole inside the margin.
-        for uv in [Vec2::new(0.0, t), Vec2::new(1.0, t), Vec2::new(t, 0.0), Vec2::new(t, 1.0)] {
+        for uv in [
+            Vec2::new(0.0, t),
+            Vec2::new(1.0, t),
+            Vec2::new(t, 0.0),
+            Vec2::new(t, 1.0),
+        ] {
             assert!(is_seam_red(&picture, uv), "{uv}");
         }
     }
     // Away from every edge, the checker's colours (in a cell between grid lines).
-    for uv in [Vec2::new(0.05, 0.12), Vec2::new(0.4, 0.27), Vec2::new(0.8, 0.8)] {
+    for uv in [
+        Vec2::new(0.05, 0.12),
+        Vec2::new(0.4, 0.27),
+        Vec2::new(0.8, 0.8),
+    ] {
         let at = LayoutOptions::default().pixel(uv, size);
-        let p = picture.pixel(at.x as u32, at.y as u32).expect("inside").demultiply();
-        assert!([236, 204].contains(&p.red()) && p.red() == p.green(), "{uv}: {p:?}");
+        let p = picture
+            .pixel(at.x as u32, at.y as u32)
+            .expect("inside")
+            .demultiply();
+        assert!(
+            [236, 204].contains(&p.red()) && p.red() == p.green(),
+            "{uv}: {p:?}"
+        );
     }
     // The margin is white.
     let corner = picture.pixel(1, 1).expect("inside").demultiply();
-    assert_eq!((corner.red(), corner.green(), corner.blue()), (255, 255, 255));
+    assert_eq!(
+        (corner.red(), corner.green(), corner.blue()),
+        (255, 255, 255)
+    );
 }
 
 #[test]
@@ -102,7 +127,10 @@ fn a_caller_texture_replaces_the_checker() {
 fn limits_are_refused() {
     let plane = mesh::plane(1, 1).expect("valid");
     let defaults = LayoutOptions::default();
-    assert!(matches!(draw_uv_layout(&plane, 0, &defaults), Err(UvError::OutOfRange { .. })));
+    assert!(matches!(
+        draw_uv_layout(&plane, 0, &defaults),
+        Err(UvError::OutOfRange { .. })
+    ));
     assert!(matches!(
         draw_uv_layout(&plane, MAX_LAYOUT_SIZE + 1, &defaults),
         Err(UvError::TooLarge { .. })
@@ -111,10 +139,22 @@ fn limits_are_refused() {
         draw_uv_layout(&plane, u32::MAX, &defaults),
         Err(UvError::TooLarge { .. })
     ));
-    let zero_cells = LayoutOptions { checker_cells: 0, ..defaults };
-    assert!(matches!(draw_uv_layout(&plane, 8, &zero_cells), Err(UvError::OutOfRange { .. })));
-    let nan_width = LayoutOptions { wire_width: f32::NAN, ..defaults };
-    assert!(matches!(draw_uv_layout(&plane, 8, &nan_width), Err(UvError::NonFinite { .. })));
+    let zero_cells = LayoutOptions {
+        checker_cells: 0,
+        ..defaults
+    };
+    assert!(matches!(
+        draw_uv_layout(&plane, 8, &zero_cells),
+        Err(UvError::OutOfRange { .. })
+    ));
+    let nan_width = LayoutOptions {
+        wire_width: f32::NAN,
+        ..defaults
+    };
+    assert!(matches!(
+        draw_uv_layout(&plane, 8, &nan_width),
+        Err(UvError::NonFinite { .. })
+    ));
     // A mesh with bad indices or non-finite uvs is drawn without them, not refused.
     let mut broken = mesh::plane(2, 2).expect("valid");
     broken.indices.push([0, 1, 1000]);

@@ -93,7 +93,10 @@ fn no_triangle_spans_half_the_texture() {
                     assert!(d.x <= 0.5 && d.y <= 0.5, "{name}: {triangle:?} spans {d}");
                 }
                 for c in uv {
-                    assert!(c.cmpge(Vec2::ZERO).all() && c.cmple(Vec2::ONE).all(), "{name}");
+                    assert!(
+                        c.cmpge(Vec2::ZERO).all() && c.cmple(Vec2::ONE).all(),
+                        "{name}"
+                    );
                 }
             }
         }
@@ -129,7 +132,10 @@ fn closed_surfaces_are_watertight_after_welding() {
             }
             let open = edges.values().filter(|&&uses| uses != (1, 1)).count();
             if closed {
-                assert_eq!(open, 0, "{name}: {open} edges not shared by exactly 2 triangles");
+                assert_eq!(
+                    open, 0,
+                    "{name}: {open} edges not shared by exactly 2 triangles"
+                );
             } else {
                 assert!(open > 0, "{name} should have a boundary");
                 assert!(
@@ -167,7 +173,10 @@ fn tangents_follow_du_with_gltf_handedness() {
                         "{name}: vertex {i} tangent {t} vs ∂p/∂u {dpdu}: {angle} rad"
                     );
                     // glTF: the bitangent w·(n × t) points up the image (decreasing v).
-                    assert!(t.w * n.cross(t.truncate()).dot(dpdv) < 0.0, "{name}: vertex {i}");
+                    assert!(
+                        t.w * n.cross(t.truncate()).dot(dpdv) < 0.0,
+                        "{name}: vertex {i}"
+                    );
                 }
             }
         }
@@ -196,28 +205,47 @@ fn zero_and_tiny_resolutions_are_refused() {
     assert!(matches!(mesh::plane(0, 3), Err(UvError::OutOfRange { .. })));
     assert!(matches!(mesh::plane(3, 0), Err(UvError::OutOfRange { .. })));
     assert!(matches!(mesh::cube(0), Err(UvError::OutOfRange { .. })));
-    assert!(matches!(mesh::cylinder(2, 1, true), Err(UvError::OutOfRange { .. })));
-    assert!(matches!(mesh::cylinder(3, 0, true), Err(UvError::OutOfRange { .. })));
-    assert!(matches!(mesh::sphere(2, 8), Err(UvError::OutOfRange { .. })));
-    assert!(matches!(mesh::sphere(8, 1), Err(UvError::OutOfRange { .. })));
-    assert!(matches!(mesh::torus(8, 2, 1.0, 0.5), Err(UvError::OutOfRange { .. })));
+    assert!(matches!(
+        mesh::cylinder(2, 1, true),
+        Err(UvError::OutOfRange { .. })
+    ));
+    assert!(matches!(
+        mesh::cylinder(3, 0, true),
+        Err(UvError::OutOfRange { .. })
+    ));
+    assert!(matches!(
+        mesh::sphere(2, 8),
+        Err(UvError::OutOfRange { .. })
+    ));
+    assert!(matches!(
+        mesh::sphere(8, 1),
+        Err(UvError::OutOfRange { .. })
+    ));
+    assert!(matches!(
+        mesh::torus(8, 2, 1.0, 0.5),
+        Err(UvError::OutOfRange { .. })
+    ));
 }
 
 #[test]
 fn bad_torus_radii_are_refused() {
     for (major, minor) in [(1.0, 0.0), (1.0, -0.5), (0.5, 0.5), (0.5, 1.0)] {
-        assert!(matches!(mesh::torus(8, 8, major, minor), Err(UvError::OutOfRange { .. })));
+        assert!(matches!(
+            mesh::torus(8, 8, major, minor),
+            Err(UvError::OutOfRange { .. })
+        ));
     }
     for (major, minor) in [(f32::NAN, 0.5), (1.0, f32::INFINITY), (f32::INFINITY, 0.5)] {
-        assert!(matches!(mesh::torus(8, 8, major, minor), Err(UvError::NonFinite { .. })));
+        assert!(matches!(
+            mesh::torus(8, 8, major, minor),
+            Err(UvError::NonFinite { .. })
+        ));
     }
 }
 
 #[test]
 fn huge_resolutions_are_refused_before_allocating() {
-    let too_large = |r: Result<Mesh, UvError>| {
-        matches!(r, Err(UvError::TooLarge { limit, .. }) if limit == MAX_VERTICES)
-    };
+    let too_large = |r: Result<Mesh, UvError>| matches!(r, Err(UvError::TooLarge { limit, .. }) if limit == MAX_VERTICES);
     assert!(too_large(mesh::plane(u32::MAX, u32::MAX)));
     assert!(too_large(mesh::plane(1 << 12, 1 << 12)));
     assert!(too_large(mesh::cube(u32::MAX)));
@@ -227,7 +255,10 @@ fn huge_resolutions_are_refused_before_allocating() {
     assert!(too_large(mesh::torus(1 << 16, 1 << 16, 2.0, 1.0)));
     // Exactly at the limit is built: (2047 + 1)(2047 + 1) = 2^22.
     assert_eq!(
-        mesh::plane(2047, 2047).expect("at the limit").positions.len() as u64,
+        mesh::plane(2047, 2047)
+            .expect("at the limit")
+            .positions
+            .len() as u64,
         MAX_VERTICES
     );
 }
@@ -237,24 +268,51 @@ fn validate_reports_each_defect() {
     let good = mesh::sphere(6, 3).expect("valid");
     let mut m = good.clone();
     m.uvs.pop();
-    assert!(matches!(m.validate(), Err(MeshDefect::LengthMismatch { what: "uvs", .. })));
+    assert!(matches!(
+        m.validate(),
+        Err(MeshDefect::LengthMismatch { what: "uvs", .. })
+    ));
     let mut m = good.clone();
     m.positions[2].x = f32::NAN;
-    assert!(matches!(m.validate(), Err(MeshDefect::NonFinite { vertex: 2, what: "position" })));
+    assert!(matches!(
+        m.validate(),
+        Err(MeshDefect::NonFinite {
+            vertex: 2,
+            what: "position"
+        })
+    ));
     let mut m = good.clone();
     m.normals[1] *= 2.0;
-    assert!(matches!(m.validate(), Err(MeshDefect::NotUnit { vertex: 1, what: "normal" })));
+    assert!(matches!(
+        m.validate(),
+        Err(MeshDefect::NotUnit {
+            vertex: 1,
+            what: "normal"
+        })
+    ));
     let mut m = good.clone();
     m.tangents[3].w = 0.5;
-    assert!(matches!(m.validate(), Err(MeshDefect::NotUnit { vertex: 3, what: "handedness" })));
+    assert!(matches!(
+        m.validate(),
+        Err(MeshDefect::NotUnit {
+            vertex: 3,
+            what: "handedness"
+        })
+    ));
     let mut m = good.clone();
     m.tangents[4] = m.normals[4].extend(1.0);
-    assert!(matches!(m.validate(), Err(MeshDefect::TangentNotOrthogonal { vertex: 4 })));
+    assert!(matches!(
+        m.validate(),
+        Err(MeshDefect::TangentNotOrthogonal { vertex: 4 })
+    ));
     let mut m = good;
     m.indices[0][1] = u32::MAX;
     assert!(matches!(
         m.validate(),
-        Err(MeshDefect::IndexOutOfRange { triangle: 0, index: u32::MAX })
+        Err(MeshDefect::IndexOutOfRange {
+            triangle: 0,
+            index: u32::MAX
+        })
     ));
 }
 

@@ -3,9 +3,9 @@
 
 use std::path::PathBuf;
 
+use barytex_uv::UvError;
 use barytex_uv::layout::{LayoutOptions, draw_uv_layout, write_png};
 use barytex_uv::mesh::{self, Mesh};
-use barytex_uv::UvError;
 use clap::ValueEnum;
 
 /// The meshes `uv-layout` can draw, at the resolutions of the pictures in `docs/uv-layout`.
@@ -60,9 +60,10 @@ pub(crate) struct Options {
 pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     let mesh = options.mesh.build()?;
     let picture = draw_uv_layout(&mesh, options.size, &LayoutOptions::default())?;
-    let out = options.out.clone().unwrap_or_else(|| {
-        PathBuf::from(format!("docs/uv-layout/{}.png", options.mesh.name()))
-    });
+    let out = options
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from(format!("docs/uv-layout/{}.png", options.mesh.name())));
     if let Some(parent) = out.parent().filter(|p| !p.as_os_str().is_empty()) {
         std::fs::create_dir_all(parent)?;
     }

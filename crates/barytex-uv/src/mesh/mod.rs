@@ -16,8 +16,8 @@
 //!   (up in the image). All generated meshes have `w = +1`.
 //! - Poles (the sphere's) keep one vertex per column, at the column's middle `u`, and the
 //!   triangles that would have zero area there are left out.
-//! - Requests larger than [`MAX_VERTICES`] are refused with [`UvError::TooLarge`] before anything
-//!   is allocated; a resolution below a shape's minimum gives [`UvError::OutOfRange`].
+//! - Requests larger than [`MAX_VERTICES`] are refused with [`UvError::TooLarge`](crate::UvError::TooLarge) before anything
+//!   is allocated; a resolution below a shape's minimum gives [`UvError::OutOfRange`](crate::UvError::OutOfRange).
 //!
 //! ```
 //! use barytex_uv::mesh;
@@ -127,7 +127,10 @@ impl fmt::Display for MeshDefect {
             Self::NonFinite { vertex, what } => write!(f, "vertex {vertex}: {what} is not finite"),
             Self::NotUnit { vertex, what } => write!(f, "vertex {vertex}: {what} is not unit"),
             Self::TangentNotOrthogonal { vertex } => {
-                write!(f, "vertex {vertex}: tangent is not orthogonal to the normal")
+                write!(
+                    f,
+                    "vertex {vertex}: tangent is not orthogonal to the normal"
+                )
             }
         }
     }
