@@ -97,6 +97,21 @@ fn the_plane_has_no_distortion() {
     }
 }
 
+#[test]
+fn the_cube_atlas_has_no_distortion() {
+    // Square cells of side 1/3 for faces of side 2: every triangle is scaled by 1/6.
+    for n in [1, 4, 9] {
+        let d = MeshDistortion::of(&mesh::cube(n).expect("valid")).expect("measurable");
+        for value in [d.angle_max, d.area_max] {
+            assert!((value - 1.0).abs() < 1e-5, "cube({n}): {d:?}");
+        }
+        assert!(
+            (d.mean_area_ratio - 1.0 / 36.0).abs() < 1e-7,
+            "cube({n}): {d:?}"
+        );
+    }
+}
+
 /// The equirectangular sphere's area-weighted mean area distortion in closed form: the area
 /// ratio at latitude φ is `ρ = 2/(π cos φ)` of the mean, so the mean of `max(ρ, 1/ρ)` is
 /// `∫₀^φ₀ (π/2) cos²φ dφ + (π/2 − φ₀)·2/π` with `cos φ₀ = 2/π`.

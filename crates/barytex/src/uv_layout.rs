@@ -4,6 +4,7 @@
 use std::path::PathBuf;
 
 use barytex_uv::UvError;
+use barytex_uv::distortion::MeshDistortion;
 use barytex_uv::layout::{LayoutOptions, draw_uv_layout, write_png};
 use barytex_uv::mesh::{self, Mesh};
 use clap::ValueEnum;
@@ -75,5 +76,11 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         options.size,
         mesh.indices.len()
     );
+    if let Some(d) = MeshDistortion::of(&mesh) {
+        println!(
+            "distortion (area-weighted mean / max): area {:.4} / {:.2}, angle {:.3} / {:.2}",
+            d.area_mean, d.area_max, d.angle_mean, d.angle_max
+        );
+    }
     Ok(())
 }

@@ -77,3 +77,35 @@ fn quick_report_writes_every_family() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn uv_layout_writes_a_png_of_the_requested_size() {
+    let dir = temp_dir("uv-layout");
+    let out = dir.join("torus.png");
+    let output = barytex()
+        .args(["uv-layout", "--mesh", "torus", "--size", "96", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "exit status {:?}", output.status);
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        stdout.contains("wrote") && stdout.contains("torus.png"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("distortion"), "{stdout}");
+    let png = std::fs::read(&out).unwrap();
+    // The PNG signature, then IHDR's width and height (big-endian).
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    let be = |at: usize| u32::from_be_bytes(png[at..at + 4].try_into().unwrap());
+    assert_eq!((be(16), be(20)), (96, 96));
+    // A zero size is refused with a message, not a panic.
+    let refused = barytex()
+        .args(["uv-layout", "--mesh", "cube", "--size", "0", "--out"])
+        .arg(dir.join("never.png"))
+        .output()
+        .unwrap();
+    assert!(!refused.status.success());
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("out of range"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1,4 +1,4 @@
-//! The cube, its six faces in a 3 × 2 atlas.
+//! The cube, its six faces in a 3 × 2 atlas of square cells.
 
 use glam::{DVec2, DVec3};
 
@@ -18,9 +18,10 @@ const FACES: [(DVec3, DVec3); 6] = [
 ];
 
 /// The cube `[−1, 1]³`, each face an `n × n` grid of quads with its own vertices (the edges are
-/// seams), laid out in a 3 × 2 atlas: face `k` of `+x, −x, +y, −y, +z, −z` fills the cell in
-/// column `k mod 3`, row `k div 3`, i.e. `u ∈ [(k mod 3)/3, (k mod 3 + 1)/3]`,
-/// `v ∈ [(k div 3)/2, (k div 3 + 1)/2]`. The side faces read upright (`v` down is `−y`).
+/// seams), laid out in a 3 × 2 atlas of square cells `1/3` on a side (so no face is stretched;
+/// the texture's bottom third, `v > 2/3`, is unused): face `k` of `+x, −x, +y, −y, +z, −z`
+/// fills the cell in column `k mod 3`, row `k div 3`, i.e. `u ∈ [(k mod 3)/3, (k mod 3 + 1)/3]`,
+/// `v ∈ [(k div 3)/3, (k div 3 + 1)/3]`. The side faces read upright (`v` down is `−y`).
 ///
 /// # Errors
 /// [`UvError::OutOfRange`] for `n = 0`; [`UvError::TooLarge`] when `6(n + 1)²` exceeds
@@ -48,7 +49,7 @@ pub fn cube(n: u32) -> Result<Mesh, UvError> {
             dpdv: tv,
             uv: DVec2::new(
                 (column + fraction(i, n)) / 3.0,
-                (row + fraction(j, n)) / 2.0,
+                (row + fraction(j, n)) / 3.0,
             ),
         });
     }

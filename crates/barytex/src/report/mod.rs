@@ -11,6 +11,7 @@ mod inverse_bilinear;
 mod orientation;
 mod slerp;
 mod table;
+mod uv_distortion;
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -72,13 +73,14 @@ impl Settings {
 pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     let settings = Settings::new(options.quick);
     type Family = fn(Settings, &mut dyn FnMut(&str)) -> Section;
-    let families: [(&str, Family); 6] = [
+    let families: [(&str, Family); 7] = [
         ("2D barycentric", barycentric_2d::run),
         ("3D barycentric", barycentric_3d::run),
         ("orientation", orientation::run),
         ("inverse bilinear", inverse_bilinear::run),
         ("SLERP family", slerp::run),
         ("2D convex hull", hull::run),
+        ("UV distortion", uv_distortion::run),
     ];
     let count = families.len();
     let mut sections = Vec::with_capacity(count);
