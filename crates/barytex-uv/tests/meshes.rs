@@ -172,6 +172,8 @@ fn tangents_follow_du_with_gltf_handedness() {
                         angle <= TANGENT_ANGLE_PER_STEP * step,
                         "{name}: vertex {i} tangent {t} vs ∂p/∂u {dpdu}: {angle} rad"
                     );
+                    // Every generated mapping is unmirrored.
+                    assert_eq!(t.w, 1.0, "{name}: vertex {i}");
                     // glTF: the bitangent w·(n × t) points up the image (decreasing v).
                     assert!(
                         t.w * n.cross(t.truncate()).dot(dpdv) < 0.0,
