@@ -46,7 +46,8 @@ proptest! {
     ) {
         let s2 = s1 * k;
         let m = svd_matrix(alpha, beta, s1, s2);
-        // A well-shaped triangle (angles ≥ 20°) in the plane, placed anywhere in 3D.
+        // A well-shaped triangle (angles ≥ 20°) in any orientation, within 10 edge lengths of the
+        // origin.
         let local = [DVec2::ZERO, DVec2::new(1.0, 0.0), DVec2::new(0.35, 0.9)].map(|q| q * scale);
         let axis = DVec3::from(axis).try_normalize().unwrap_or(DVec3::Z);
         let rotation = DQuat::from_axis_angle(axis, angle);
