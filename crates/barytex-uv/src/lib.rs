@@ -5,7 +5,8 @@
 //! | concept | items |
 //! |---|---|
 //! | the seam | [`UvMapping`], [`SurfacePoint`], [`UvJacobian`], [`UvSample`] |
-//! | object-space mappings | [`mappings`] |
+//! | object-space mappings | [`mappings`]: [`Planar`](mappings::Planar), [`BoxMapping`](mappings::BoxMapping), [`Cylindrical`](mappings::Cylindrical), [`Spherical`](mappings::Spherical), [`Torus`](mappings::Torus) |
+//! | seam repair | [`seam::repair_seam`], [`seam::repair_sphere_triangle`] |
 //! | environment maps | [`environment`] |
 //! | parametric meshes | [`mesh`] |
 //! | distortion | [`distortion`] |
@@ -47,6 +48,7 @@ pub mod layout;
 mod mapping;
 pub mod mappings;
 pub mod mesh;
+pub mod seam;
 
 pub use error::UvError;
 pub use mapping::{SurfacePoint, UvJacobian, UvMapping, UvSample};
