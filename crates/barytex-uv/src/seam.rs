@@ -72,7 +72,9 @@ pub fn repair_seam(uvs: [Vec2; 3]) -> [Vec2; 3] {
 }
 
 /// [`repair_seam`] for a triangle of a sphere (or any mapping with poles at `v = 0` and
-/// `v = 1`): a vertex at a pole (`v ≤ 0` or `v ≥ 1`) has no meaningful `u`, so the other
+/// `v = 1`): a vertex at a pole (`v ≤ 0` or `v ≥ 1`, exactly: the spherical mapping has no `u`
+/// on the axis and returns `None` there, so whoever builds the mesh writes the pole row's `v`)
+/// has no meaningful `u`, so the other
 /// vertices are repaired among themselves and the pole vertex takes the mean of their `u`
 /// (the pole's texel row is then sampled under the triangle rather than across the whole
 /// texture). With two vertices at poles the third one's `u` is used; with three, or a

@@ -43,9 +43,17 @@ impl BoxFace {
         }
         let a = normal.abs();
         let face = if a.x >= a.y && a.x >= a.z {
-            if normal.x.is_sign_negative() { Self::NegX } else { Self::PosX }
+            if normal.x.is_sign_negative() {
+                Self::NegX
+            } else {
+                Self::PosX
+            }
         } else if a.y >= a.z {
-            if normal.y.is_sign_negative() { Self::NegY } else { Self::PosY }
+            if normal.y.is_sign_negative() {
+                Self::NegY
+            } else {
+                Self::PosY
+            }
         } else if normal.z.is_sign_negative() {
             Self::NegZ
         } else {
