@@ -22,6 +22,14 @@ const FD_BOUND: f64 = 1e-7;
 const ROUND_TRIP_BOUND: f32 = 1e-5;
 
 trait Mapping: UvMapping + UvMapping64 {}
+
+/// A mapping, its inverse, and the surface normal at a point.
+type Inverse = (
+    &'static str,
+    Box<dyn Mapping>,
+    Box<dyn InverseUvMapping>,
+    fn(Vec3) -> Vec3,
+);
 impl<T: UvMapping + UvMapping64> Mapping for T {}
 
 /// A named mapping and a sampler of regular points (away from axes, poles and singular sets)
@@ -267,7 +275,7 @@ proptest! {
     #[test]
     fn round_trip_uv_point_uv(u in 0.01f32..0.99, v in 0.05f32..0.95) {
         let uv = Vec2::new(u, v);
-        let inverses: Vec<(&str, Box<dyn Mapping>, Box<dyn InverseUvMapping>, fn(Vec3) -> Vec3)> = vec![
+        let inverses: Vec<Inverse> = vec![
             ("planar skew", Box::new(skew()), Box::new(skew()), |_| Vec3::Z),
             ("cylinder", Box::new(cylinder()), Box::new(cylinder()), |p| Vec3::new(p.x, 0.0, p.z)),
             ("sphere equirectangular", Box::new(sphere(SphereProjection::Equirectangular)),

@@ -136,7 +136,7 @@ impl BoxMapping {
             return Err(UvError::NonFinite { what: "center" });
         }
         let size = super::positive("size", size)?;
-        if !(1.0 / size).as_f32_finite() {
+        if !f32_finite(1.0 / size) {
             return Err(UvError::OutOfRange {
                 what: "size",
                 value: size,
@@ -162,15 +162,10 @@ impl BoxMapping {
     }
 }
 
-trait F32Finite {
-    fn as_f32_finite(self) -> bool;
-}
-
-impl F32Finite for f64 {
-    #[allow(clippy::cast_possible_truncation)]
-    fn as_f32_finite(self) -> bool {
-        (self as f32).is_finite()
-    }
+/// Whether `x` stays finite when rounded to f32.
+#[allow(clippy::cast_possible_truncation)]
+fn f32_finite(x: f64) -> bool {
+    (x as f32).is_finite()
 }
 
 impl UvMapping64 for BoxMapping {

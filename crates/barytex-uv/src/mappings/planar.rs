@@ -58,7 +58,7 @@ impl Planar {
         let n2 = n.length_squared();
         let sine = (n2 / (u_axis.length_squared() * v_axis.length_squared())).sqrt();
         // Nearly parallel axes make the dual basis explode; 1e-6 keeps it within 1e6 |axis|⁻¹.
-        if !(sine >= 1e-6) {
+        if sine.is_nan() || sine < 1e-6 {
             return Err(UvError::OutOfRange {
                 what: "v_axis",
                 value: sine,
