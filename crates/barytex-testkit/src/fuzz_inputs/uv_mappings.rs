@@ -266,13 +266,12 @@ pub fn check_uv_mappings(bytes: &[u8]) -> Result<(), String> {
     let d = [input.abc[0], input.abc[1]];
     for (name, m) in mappings(&input) {
         let mut p = input.p;
-        if input.kind == 3 {
-            if let Some(q) = m.inverse().and_then(|inv| inv.point_at(input.tri[0])) {
-                if !q.is_finite() {
-                    return Err(format!("{name}: point_at gave {q:?}"));
-                }
-                p = q;
+        let on_surface = m.inverse().and_then(|inv| inv.point_at(input.tri[0]));
+        if let (3, Some(q)) = (input.kind, on_surface) {
+            if !q.is_finite() {
+                return Err(format!("{name}: point_at gave {q:?}"));
             }
+            p = q;
         }
         check_mapping(name, m.as_ref(), p, input.n, d)?;
     }
