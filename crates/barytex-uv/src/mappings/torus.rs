@@ -23,7 +23,7 @@ use crate::{UvError, UvJacobian, UvMapping};
 /// # Accuracy
 /// Evaluated in f64 and rounded once; matches central finite differences to a relative 1e-7 away
 /// from the seams and the singular sets (`tests/mappings.rs::jacobian_matches_finite_differences`);
-/// `point_at` round trips within 1e-5 in uv (`tests/mappings.rs::round_trip_uv_point_uv`).
+/// `point_at` round trips within 1e-6 in uv (`tests/mappings.rs::round_trip_uv_point_uv`).
 ///
 /// ```
 /// use barytex_uv::mappings::{InverseUvMapping, Torus};
