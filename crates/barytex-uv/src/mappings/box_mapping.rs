@@ -202,7 +202,7 @@ impl UvMapping for BoxMapping {
 /// so large sharpness never underflows all three weights.
 ///
 /// # Accuracy
-/// Each weight within 4 f32 ulps of the f64 formula; the sum within 4 ulps of 1
+/// The weights are non-negative and sum to 1 within 4 f32 ulps
 /// (`tests/mappings.rs::triplanar_weights_sum_to_one`).
 ///
 /// ```
