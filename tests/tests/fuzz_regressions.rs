@@ -63,6 +63,14 @@ fn slerp_regressions() {
 }
 
 #[test]
+fn uv_mappings_regressions() {
+    replay(
+        "uv_mappings",
+        barytex_testkit::fuzz_inputs::uv_mappings::check_uv_mappings,
+    );
+}
+
+#[test]
 fn orient_barycentric_regressions() {
     replay("orient_barycentric", check_orient_barycentric);
 }

@@ -5,7 +5,8 @@
 //! | concept | items |
 //! |---|---|
 //! | the seam | [`UvMapping`], [`SurfacePoint`], [`UvJacobian`], [`UvSample`] |
-//! | object-space mappings | [`mappings`] |
+//! | object-space mappings | [`mappings`]: [`Planar`](mappings::Planar), [`BoxMapping`](mappings::BoxMapping), [`Cylindrical`](mappings::Cylindrical), [`Spherical`](mappings::Spherical), [`Torus`](mappings::Torus) |
+//! | seam repair | [`seam::repair_seam`], [`seam::repair_sphere_triangle`] |
 //! | environment maps | [`environment`] |
 //! | parametric meshes | [`mesh`]: [`Mesh`], [`mesh::plane`], [`mesh::cube`], [`mesh::cylinder`], [`mesh::sphere`], [`mesh::torus`] |
 //! | distortion | [`distortion`]: [`MeshDistortion`], [`TriangleDistortion`], [`distortion::singular_values`] |
@@ -48,6 +49,7 @@ pub mod layout;
 mod mapping;
 pub mod mappings;
 pub mod mesh;
+pub mod seam;
 
 pub use distortion::{MeshDistortion, TriangleDistortion};
 pub use error::UvError;

@@ -14,6 +14,7 @@ pub mod hull2d;
 pub mod hull3d;
 pub mod polygon;
 pub mod slerp;
+pub mod uv_mappings;
 
 use std::fmt::Write as _;
 
