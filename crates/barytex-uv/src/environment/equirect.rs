@@ -67,9 +67,10 @@ pub fn equirect_direction(uv: Vec2) -> Option<Vec3> {
     if !uv.is_finite() {
         return None;
     }
-    // Reduce u to [0, 1) before scaling so that large u keep their fraction.
+    // Reduce u (period 1) and v (period 2) before scaling, so that huge finite uv neither
+    // overflow nor lose their fraction.
     let phi = TAU * (uv.x - uv.x.floor() - 0.5);
-    let theta = PI * uv.y;
+    let theta = PI * (uv.y - 2.0 * (0.5 * uv.y).floor());
     let (sin_p, cos_p) = phi.sin_cos();
     let (sin_t, cos_t) = theta.sin_cos();
     let d = Vec3::new(sin_t * sin_p, cos_t, -sin_t * cos_p);

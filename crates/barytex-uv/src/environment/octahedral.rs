@@ -54,8 +54,8 @@ pub fn octahedral_encode(dir: Vec3) -> Option<Vec2> {
 /// `d = (p.x, p.y, 1 − |p.x| − |p.y|)`, unfolded by `d.xy ← (1 − |d.yx|)·sign(d.xy)` where
 /// `d.z < 0`, then normalized.
 ///
-/// Any finite `uv` gives a unit vector (outside `[0, 1]²` the formula continues without a
-/// zero); `None` for a non-finite `uv`.
+/// `uv` outside `[0, 1]²` is clamped to the square first; every finite `uv` gives a unit vector.
+/// `None` for a non-finite `uv`.
 ///
 /// # Accuracy
 /// Within [`OCTAHEDRAL_ROUND_TRIP_BOUND`] radians of the exact direction; `octahedral_encode`
@@ -74,7 +74,7 @@ pub fn octahedral_decode(uv: Vec2) -> Option<Vec3> {
     if !uv.is_finite() {
         return None;
     }
-    let p = 2.0 * uv - 1.0;
+    let p = 2.0 * uv.clamp(Vec2::ZERO, Vec2::ONE) - 1.0;
     let z = 1.0 - p.x.abs() - p.y.abs();
     let xy = if z < 0.0 {
         (1.0 - Vec2::new(p.y, p.x).abs()) * sign_not_zero(p)

@@ -19,10 +19,12 @@ use crate::UvJacobian;
 /// inside the disk `|(s, t) − (½, ½)| ≤ ½`.
 ///
 /// # Accuracy
-/// `1 + rz` is computed as `(rx² + ry²)/(1 − rz)` when `rz < 0`, so there is no cancellation
-/// near the singular direction: [`sphere_map_direction`] of the result is within
-/// [`SPHERE_MAP_ROUND_TRIP_BOUND`] radians of `r` for directions at least `1e-3` radians
-/// from `−z` (`environment.rs::sphere_map_round_trips`).
+/// `(s, t)` within `4e-7` of the exact value: `1 + rz` is computed as `(rx² + ry²)/(1 − rz)`
+/// when `rz < 0`, so there is no cancellation near the singular direction. The round trip
+/// through [`sphere_map_direction`] is within `SPHERE_MAP_ROUND_TRIP_BOUND / cos(α/2)` radians
+/// of `r`, `α` the angle of `r` from `+z` (`cos(α/2) = sqrt((1 + rz)/2)`): a direction `δ` from
+/// `−z` lies `≈ δ/4` from the rim, where the f32 resolution of `(s, t)` is spread over an angle
+/// `4/δ` times larger (`environment.rs::sphere_map_round_trips`).
 ///
 /// ```
 /// use barytex_uv::environment::sphere_map_uv;
@@ -37,19 +39,23 @@ use crate::UvJacobian;
 #[must_use]
 pub fn sphere_map_uv(r: Vec3) -> Option<Vec2> {
     let r = unit(r)?;
-    let half_m = half_m(r)?;
-    let st = Vec2::new(r.x, r.y) / (2.0 * half_m) + 0.5;
+    let p = Vec2::new(r.x, r.y) / (2.0 * half_m(r)?);
+    // |p| ≤ ½ exactly, but rounding can push a point a few ulps past the rim: pull it back.
+    let len2 = p.length_squared();
+    let p = if len2 > 0.25 { p * (0.5 / len2.sqrt()) } else { p };
+    let st = p + 0.5;
     st.is_finite().then_some(st)
 }
 
-/// `m/2 = sqrt(2(1 + rz))` for a unit `r`, with `1 + rz` free of cancellation; `None` at `−z`.
+/// `m/2 = sqrt(2(1 + rz))` for a unit `r`, free of cancellation and underflow: for `rz < 0`,
+/// `1 + rz = ρ²/(1 − rz)` with `ρ = hypot(rx, ry)`, so `m/2 = ρ·sqrt(2/(1 − rz))`. `None` at
+/// `−z` (`ρ = 0` there).
 fn half_m(r: Vec3) -> Option<f32> {
-    let one_plus_z = if r.z >= 0.0 {
-        1.0 + r.z
+    let h = if r.z >= 0.0 {
+        (2.0 * (1.0 + r.z)).sqrt()
     } else {
-        (r.x * r.x + r.y * r.y) / (1.0 - r.z)
+        r.x.hypot(r.y) * (2.0 / (1.0 - r.z)).sqrt()
     };
-    let h = (2.0 * one_plus_z).sqrt();
     (h > 0.0).then_some(h)
 }
 
@@ -61,8 +67,10 @@ fn half_m(r: Vec3) -> Option<f32> {
 /// the singular direction `(0, 0, −1)`.
 ///
 /// # Accuracy
-/// Within [`SPHERE_MAP_ROUND_TRIP_BOUND`] radians of the exact direction for points at least
-/// `1e-3` inside the rim (`environment.rs::sphere_map_uv_round_trips`).
+/// Within `SPHERE_MAP_ROUND_TRIP_BOUND / sqrt(1 − ρ²)` radians of the exact direction at the
+/// distance `ρ/2` from the centre (the direction's sensitivity to `(s, t)` grows towards the rim);
+/// `sphere_map_uv` of the result gives back `st` within `1e-6` for `ρ < 0.998`
+/// (`environment.rs::sphere_map_uv_round_trips`).
 ///
 /// ```
 /// use barytex_uv::environment::sphere_map_direction;
@@ -88,8 +96,8 @@ pub fn sphere_map_direction(st: Vec2) -> Option<Vec3> {
     r.is_finite().then_some(r)
 }
 
-/// Angle (radians) of the sphere-map round trips at least `1e-3` radians from the singular
-/// direction (`environment.rs::sphere_map_round_trips`).
+/// Angle (radians) of the sphere-map round trip at the centre of the map; at an angle `α` from
+/// `+z` the bound is this divided by `cos(α/2)` (`environment.rs::sphere_map_round_trips`).
 pub const SPHERE_MAP_ROUND_TRIP_BOUND: f32 = 2.0e-6;
 
 /// [`sphere_map_uv`] with the gradients of `s` and `t` with respect to the (not necessarily
