@@ -197,7 +197,8 @@ pub const CUBE_ROUND_TRIP_BOUND: f32 = 6.0e-7;
 
 /// [`cube_face_uv`] with the gradients of `s` and `t` with respect to the direction (the face
 /// held fixed): `∇s = ½(a − (sc/|ma|)c)/|ma|`, likewise `∇t` with `b`. Both gradients are
-/// orthogonal to `dir` (the map ignores length). `None` as for `cube_face_uv`.
+/// orthogonal to `dir` (the map ignores length). `None` as for `cube_face_uv`, or when the
+/// gradients overflow (`|dir|` below about `1e-38`).
 ///
 /// # Accuracy
 /// Relative to the largest gradient entry, within `1e-6` of the exact gradient

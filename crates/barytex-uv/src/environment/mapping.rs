@@ -26,7 +26,12 @@ pub enum EnvironmentMap {
 
 impl EnvironmentMap {
     /// All four maps.
-    pub const ALL: [Self; 4] = [Self::Cube, Self::Equirect, Self::SphereMap, Self::Octahedral];
+    pub const ALL: [Self; 4] = [
+        Self::Cube,
+        Self::Equirect,
+        Self::SphereMap,
+        Self::Octahedral,
+    ];
 
     /// A short lowercase name (`"cube"`, `"equirect"`, `"sphere-map"`, `"octahedral"`).
     #[must_use]

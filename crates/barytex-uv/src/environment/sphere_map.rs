@@ -42,7 +42,11 @@ pub fn sphere_map_uv(r: Vec3) -> Option<Vec2> {
     let p = Vec2::new(r.x, r.y) / (2.0 * half_m(r)?);
     // |p| ≤ ½ exactly, but rounding can push a point a few ulps past the rim: pull it back.
     let len2 = p.length_squared();
-    let p = if len2 > 0.25 { p * (0.5 / len2.sqrt()) } else { p };
+    let p = if len2 > 0.25 {
+        p * (0.5 / len2.sqrt())
+    } else {
+        p
+    };
     let st = p + 0.5;
     st.is_finite().then_some(st)
 }
@@ -87,7 +91,7 @@ pub fn sphere_map_direction(st: Vec2) -> Option<Vec3> {
     }
     let p = 2.0 * st - 1.0;
     let rho2 = p.length_squared();
-    if !(rho2 <= 1.0) {
+    if rho2 > 1.0 {
         return None;
     }
     let nz = (1.0 - rho2).sqrt();
