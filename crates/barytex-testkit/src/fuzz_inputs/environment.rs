@@ -225,7 +225,7 @@ pub fn check_environment(bytes: &[u8]) -> Result<(), String> {
     let valid = |v: Vec3| v.is_finite() && v != Vec3::ZERO;
     let r = reflect_normalized(d, w);
     match r {
-        Some(r) if !(valid(d) && valid(w)) || !is_unit(r) => {
+        Some(r) if !(valid(d) && valid(w) && is_unit(r)) => {
             return Err(format!("reflect_normalized({d:?}, {w:?}) = {r:?}"));
         }
         Some(r) => check_direction(r)?,
@@ -243,10 +243,10 @@ pub fn check_environment(bytes: &[u8]) -> Result<(), String> {
         for lookup in [Lookup::Normal, Lookup::Reflect { eye: w }] {
             let mapping = EnvironmentMapping { map, lookup };
             let position = uv.extend(0.0);
-            if let Some(j) = mapping.uv_and_jacobian(position, d) {
-                if !in_unit_square(j.uv) || !j.du.is_finite() || !j.dv.is_finite() {
-                    return Err(format!("{mapping:?} at {position:?}, normal {d:?}: {j:?}"));
-                }
+            if let Some(j) = mapping.uv_and_jacobian(position, d)
+                && (!in_unit_square(j.uv) || !j.du.is_finite() || !j.dv.is_finite())
+            {
+                return Err(format!("{mapping:?} at {position:?}, normal {d:?}: {j:?}"));
             }
         }
     }

@@ -33,7 +33,9 @@ pub fn equirect_uv(dir: Vec3) -> Option<Vec2> {
     if !dir.is_finite() || dir == Vec3::ZERO {
         return None;
     }
-    // hypot and atan2 avoid the overflow of x² + z² and the cancellation of acos near the poles.
+    // Scaled to a largest component of 1: subnormal directions would lose their precision in
+    // hypot. hypot and atan2 avoid the cancellation of acos near the poles.
+    let dir = dir / dir.abs().max_element();
     let rho = dir.x.hypot(dir.z);
     let u = if rho == 0.0 {
         0.5

@@ -67,8 +67,9 @@ fn half_m(r: Vec3) -> Option<f32> {
 /// normal is `n = (2s − 1, 2t − 1, sqrt(1 − nx² − ny²))` and `r = 2nz·n − (0, 0, 1)` (the view
 /// vector is `+z`).
 ///
-/// `None` for a non-finite `st` or one outside the disk (`nx² + ny² > 1`); the rim itself maps to
-/// the singular direction `(0, 0, −1)`.
+/// `None` for a non-finite `st` or one outside the disk (`nx² + ny² > 1 + 4ε`: points a few
+/// ulps outside, where rounding puts some rim points, count as on the rim); the rim itself maps
+/// to the singular direction `(0, 0, −1)`.
 ///
 /// # Accuracy
 /// Within `SPHERE_MAP_ROUND_TRIP_BOUND / sqrt(1 − ρ²)` radians of the exact direction at the
@@ -91,13 +92,13 @@ pub fn sphere_map_direction(st: Vec2) -> Option<Vec3> {
     }
     let p = 2.0 * st - 1.0;
     let rho2 = p.length_squared();
-    if rho2 > 1.0 {
+    // sphere_map_uv rounds points of the rim up to a few ulps outside it: they count as on it.
+    if rho2 > 1.0 + 4.0 * f32::EPSILON {
         return None;
     }
-    let nz = (1.0 - rho2).sqrt();
+    let nz = (1.0 - rho2).max(0.0).sqrt();
     // rz = 2nz² − 1 = 1 − 2ρ²: the second form is exact near the centre.
-    let r = Vec3::new(2.0 * nz * p.x, 2.0 * nz * p.y, 1.0 - 2.0 * rho2);
-    r.is_finite().then_some(r)
+    unit(Vec3::new(2.0 * nz * p.x, 2.0 * nz * p.y, 1.0 - 2.0 * rho2))
 }
 
 /// Angle (radians) of the sphere-map round trip at the centre of the map; at an angle `α` from
