@@ -211,7 +211,7 @@ fn check_uv(uv: Vec2) -> Result<(), String> {
     Ok(())
 }
 
-/// The invariants: [`check_direction`] on `d` (and on its reflection about `w`), `check_uv` on
+/// The invariants: `check_direction` on `d` (and on its reflection about `w`), `check_uv` on
 /// `uv`, `reflect_normalized` unit or `None` exactly for an invalid input, and the
 /// [`EnvironmentMapping`]s total (`Some` only with finite uv in `[0, 1]²` and finite
 /// gradients).
