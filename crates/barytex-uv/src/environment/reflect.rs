@@ -40,7 +40,8 @@ pub fn reflect(n: Vec3, v: Vec3) -> Vec3 {
 /// normalizing, so `|v|²` never overflows or underflows).
 ///
 /// # Accuracy
-/// Within `4·ε` radians of the exact reflection of the exact unit vectors
+/// Within `8·ε` radians of the exact reflection of the exact unit vectors (the two
+/// normalizations each move their vector by up to `ε`, which the reflection doubles)
 /// (`environment.rs::reflect_matches_f64`).
 ///
 /// ```
