@@ -58,6 +58,14 @@ fn replay(target: &str, check: fn(&[u8]) -> Result<(), String>) {
 }
 
 #[test]
+fn environment_regressions() {
+    replay(
+        "environment",
+        barytex_testkit::fuzz_inputs::environment::check_environment,
+    );
+}
+
+#[test]
 fn slerp_regressions() {
     replay("slerp", barytex_testkit::fuzz_inputs::slerp::check_slerp);
 }
