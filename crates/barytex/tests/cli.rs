@@ -60,6 +60,7 @@ fn quick_report_writes_every_family() {
         "## Inverse bilinear",
         "## SLERP family",
         "## 2D convex hull",
+        "## UV mappings",
         "## UV distortion",
     ] {
         assert!(interp.contains(heading), "missing {heading:?}");

@@ -12,6 +12,7 @@ mod orientation;
 mod slerp;
 mod table;
 mod uv_distortion;
+mod uv_mappings;
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -73,13 +74,14 @@ impl Settings {
 pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     let settings = Settings::new(options.quick);
     type Family = fn(Settings, &mut dyn FnMut(&str)) -> Section;
-    let families: [(&str, Family); 7] = [
+    let families: [(&str, Family); 8] = [
         ("2D barycentric", barycentric_2d::run),
         ("3D barycentric", barycentric_3d::run),
         ("orientation", orientation::run),
         ("inverse bilinear", inverse_bilinear::run),
         ("SLERP family", slerp::run),
         ("2D convex hull", hull::run),
+        ("UV mappings", uv_mappings::run),
         ("UV distortion", uv_distortion::run),
     ];
     let count = families.len();
