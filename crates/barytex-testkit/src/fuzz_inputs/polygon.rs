@@ -19,7 +19,7 @@ use std::fmt::Write as _;
 
 use glam::Vec2;
 
-use super::{mode, point, word};
+use super::{code, mode, point, word};
 use crate::polygon_invariants::{check_polygon_all, polygon_on_ellipse};
 use crate::strategies::step_ulps;
 
@@ -80,17 +80,6 @@ pub fn polygon_geometry(bytes: &[u8]) -> (Vec2, Vec<Vec2>) {
 pub fn check_polygon(bytes: &[u8]) -> Result<(), String> {
     let (p, polygon) = polygon_geometry(bytes);
     check_polygon_all(p, &polygon)
-}
-
-/// `Vec2::new(f32::from_bits(0x…), f32::from_bits(0x…))` then `term` and the values as a comment.
-fn code(v: Vec2, term: char) -> String {
-    format!(
-        "Vec2::new(f32::from_bits({:#010x}), f32::from_bits({:#010x})){term} // ({:?}, {:?})",
-        v.x.to_bits(),
-        v.y.to_bits(),
-        v.x,
-        v.y
-    )
 }
 
 /// The `polygon` input as a Rust block that re-runs its check.
