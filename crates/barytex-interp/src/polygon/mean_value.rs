@@ -4,9 +4,7 @@
 
 use glam::Vec2;
 
-use super::shape::{
-    Convexity, STACK, edge_weights, locate, next, normalise, prev, validate, vertex_weights,
-};
+use super::shape::{Convexity, STACK, locate_and_weigh_boundary, next, normalise, prev, validate};
 use super::{PolygonError, PolygonLocation};
 use crate::determinant::orient2d_det;
 
@@ -99,17 +97,9 @@ pub fn mean_value_weights(
         }
     }
     let area_at = |i: usize| if cached { areas[i] } else { area(i) };
-    let location = locate(p, polygon, shape, area_at);
-    match location {
-        PolygonLocation::OnVertex(i) => {
-            vertex_weights(i, weights);
-            return Ok(location);
-        }
-        PolygonLocation::OnEdge(i) => {
-            edge_weights(p, polygon, i, weights);
-            return Ok(location);
-        }
-        PolygonLocation::Inside | PolygonLocation::Outside => {}
+    let (location, done) = locate_and_weigh_boundary(p, polygon, shape, area_at, weights);
+    if done {
+        return Ok(location);
     }
     // Every radius is positive here (`p` is no vertex).
     let mut radii = [0.0f64; STACK];

@@ -125,12 +125,7 @@ pub(super) fn validate(
 
 /// The point's place relative to a validated polygon, from the exact-sign edge areas
 /// `area(i) = (vᵢ − p) × (vᵢ₊₁ − p)`.
-pub(super) fn locate(
-    p: Vec2,
-    polygon: &[Vec2],
-    shape: Shape,
-    area: impl Fn(usize) -> f64,
-) -> PolygonLocation {
+fn locate(p: Vec2, polygon: &[Vec2], shape: Shape, area: impl Fn(usize) -> f64) -> PolygonLocation {
     let n = polygon.len();
     if let Some(i) = polygon.iter().position(|&v| v == p) {
         return PolygonLocation::OnVertex(i);
@@ -151,13 +146,38 @@ pub(super) fn locate(
     on_edge.map_or(PolygonLocation::Inside, PolygonLocation::OnEdge)
 }
 
+/// [`locate`], and for a point on a vertex or an edge also its weights, which every generalized
+/// barycentric coordinate shares there (`eᵢ`, or the edge's affine coordinates). Returns the
+/// location and whether `weights` are final.
+pub(super) fn locate_and_weigh_boundary(
+    p: Vec2,
+    polygon: &[Vec2],
+    shape: Shape,
+    area: impl Fn(usize) -> f64,
+    weights: &mut [f32],
+) -> (PolygonLocation, bool) {
+    let location = locate(p, polygon, shape, area);
+    let done = match location {
+        PolygonLocation::OnVertex(i) => {
+            vertex_weights(i, weights);
+            true
+        }
+        PolygonLocation::OnEdge(i) => {
+            edge_weights(p, polygon, i, weights);
+            true
+        }
+        PolygonLocation::Inside | PolygonLocation::Outside => false,
+    };
+    (location, done)
+}
+
 /// Whether `p`, known to be on the line through `a` and `b`, is between them (exact compares).
 fn within_segment(p: Vec2, a: Vec2, b: Vec2) -> bool {
     p.x >= a.x.min(b.x) && p.x <= a.x.max(b.x) && p.y >= a.y.min(b.y) && p.y <= a.y.max(b.y)
 }
 
 /// Writes the weights of a point exactly on vertex `i`: `eᵢ`.
-pub(super) fn vertex_weights(i: usize, weights: &mut [f32]) {
+fn vertex_weights(i: usize, weights: &mut [f32]) {
     weights.fill(0.0);
     weights[i] = 1.0;
 }

@@ -4,7 +4,7 @@
 use glam::Vec2;
 
 use super::shape::{
-    Convexity, STACK, edge_weights, locate, next, normalise, prev, validate, vertex_weights,
+    Convexity, STACK, edge_weights, locate_and_weigh_boundary, next, normalise, prev, validate,
 };
 use super::{PolygonError, PolygonLocation};
 use crate::determinant::orient2d_det;
@@ -83,27 +83,19 @@ pub fn wachspress_weights(
         }
     }
     let area_at = |i: usize| if cached { areas[i] } else { area(i) };
-    let location = locate(p, polygon, shape, area_at);
-    match location {
-        PolygonLocation::OnVertex(i) => {
-            vertex_weights(i, weights);
-            return Ok(location);
-        }
-        PolygonLocation::OnEdge(i) => {
-            edge_weights(p, polygon, i, weights);
-            return Ok(location);
-        }
-        PolygonLocation::Inside => {}
-        PolygonLocation::Outside => {
-            // On the line of an edge the weights are that edge's affine coordinates, if it is
-            // the only such line; on two, every numerator of the product form vanishes.
-            let mut zeros = (0..n).filter(|&i| area_at(i) == 0.0);
-            if let Some(i) = zeros.next() {
-                if zeros.next().is_some() || !edge_weights(p, polygon, i, weights) {
-                    return Err(PolygonError::Undefined);
-                }
-                return Ok(location);
+    let (location, done) = locate_and_weigh_boundary(p, polygon, shape, area_at, weights);
+    if done {
+        return Ok(location);
+    }
+    if location == PolygonLocation::Outside {
+        // On the line of an edge the weights are that edge's affine coordinates, if it is the
+        // only such line; on two, every numerator of the product form vanishes.
+        let mut zeros = (0..n).filter(|&i| area_at(i) == 0.0);
+        if let Some(i) = zeros.next() {
+            if zeros.next().is_some() || !edge_weights(p, polygon, i, weights) {
+                return Err(PolygonError::Undefined);
             }
+            return Ok(location);
         }
     }
     let corner = |i: usize| {
