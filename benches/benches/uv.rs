@@ -12,12 +12,13 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use barytex_testkit::seeded::XorShift;
+use barytex_testkit::uv::{finite_difference_jacobian, surface_points};
 use barytex_uv::mappings::{
     BoxMapping, CylinderCaps, Cylindrical, Planar, SphereProjection, Spherical, Torus,
 };
 use barytex_uv::{UvJacobian, UvMapping};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 /// Points per batch; every bench reports time per point.
 const BATCH: usize = 1024;
@@ -31,40 +32,12 @@ fn config() -> Criterion {
         .measurement_time(Duration::from_secs(1))
 }
 
-/// Central differences of `uv` (six evaluations), wrapped across seams.
 fn fd_jacobian(m: &dyn UvMapping, p: Vec3, n: Vec3) -> Option<UvJacobian> {
-    let uv = m.uv(p, n)?;
-    let mut grads = [Vec3::ZERO; 2];
-    for (i, e) in [Vec3::X, Vec3::Y, Vec3::Z].into_iter().enumerate() {
-        let mut d = m.uv(p + H * e, n)? - m.uv(p - H * e, n)?;
-        d -= d.round();
-        let g: Vec2 = d / (2.0 * H);
-        grads[0][i] = g.x;
-        grads[1][i] = g.y;
-    }
-    Some(UvJacobian {
-        uv,
-        du: grads[0],
-        dv: grads[1],
-    })
+    finite_difference_jacobian(m, p, n, H)
 }
 
 fn points(rng: &mut XorShift, torus: bool) -> Vec<(Vec3, Vec3)> {
-    (0..BATCH)
-        .map(|_| {
-            let (st, ct) = rng.f32_in(0.0, std::f32::consts::TAU).sin_cos();
-            if torus {
-                let (sp, cp) = rng.f32_in(0.0, std::f32::consts::TAU).sin_cos();
-                let ring = 2.0 + 0.5 * cp;
-                let p = Vec3::new(ring * st, 0.5 * sp, ring * ct);
-                (p, Vec3::new(cp * st, sp, cp * ct))
-            } else {
-                let lat = rng.f32_in(-1.3, 1.3);
-                let n = Vec3::new(lat.cos() * st, lat.sin(), lat.cos() * ct);
-                (n, n)
-            }
-        })
-        .collect()
+    surface_points(rng, BATCH, torus)
 }
 
 fn mappings() -> Vec<(&'static str, Box<dyn UvMapping>)> {

@@ -11,6 +11,8 @@
 //! - [`polygon_invariants`]: exact Wachspress references and the generalized-barycentric
 //!   invariant check shared by the polygon property tests and the `polygon` fuzz target.
 //! - [`seeded`]: a seeded generator and input shapes shared by the benchmarks and the report.
+//! - [`uv`](mod@uv): seeded surface points and the finite-difference Jacobian for barytex-uv's
+//!   benchmarks and report.
 //! - [`ulp`]: distances in units in the last place.
 //! - [`components`]: flatten any interpolable value into `f64` components for comparisons.
 //! - [`fuzz_inputs`]: the fuzz targets' byte layouts, shared with the regression replay.
@@ -27,6 +29,7 @@ pub mod seeded;
 pub mod sphere;
 pub mod strategies;
 pub mod ulp;
+pub mod uv;
 
 /// Where the shared fixtures live: `$BARYTEX_FIXTURES`, else `../shared/fixtures` relative to the
 /// workspace root. `None` when absent (tests then skip with a printed note).

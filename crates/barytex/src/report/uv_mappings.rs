@@ -4,11 +4,12 @@
 //! f64 Jacobian (`UvMapping64`).
 
 use barytex_testkit::seeded::XorShift;
+use barytex_testkit::uv::{finite_difference_jacobian, surface_points};
 use barytex_uv::mappings::{
     BoxMapping, CylinderCaps, Cylindrical, Planar, SphereProjection, Spherical, Torus, UvMapping64,
 };
 use barytex_uv::{UvJacobian, UvMapping};
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 use super::{ErrorStats, Row, Section, Settings, Table};
 use crate::timing::ns_per_call;
@@ -19,52 +20,12 @@ const H: f32 = 1e-3;
 trait Mapping: UvMapping + UvMapping64 {}
 impl<T: UvMapping + UvMapping64> Mapping for T {}
 
-/// Central differences of `uv` (six evaluations), wrapped across seams.
-fn fd_jacobian(m: &dyn Mapping, p: Vec3, n: Vec3) -> Option<UvJacobian> {
-    let uv = m.uv(p, n)?;
-    let mut grads = [Vec3::ZERO; 2];
-    for (i, e) in [Vec3::X, Vec3::Y, Vec3::Z].into_iter().enumerate() {
-        let mut d = m.uv(p + H * e, n)? - m.uv(p - H * e, n)?;
-        d -= d.round();
-        let g: Vec2 = d / (2.0 * H);
-        grads[0][i] = g.x;
-        grads[1][i] = g.y;
-    }
-    Some(UvJacobian {
-        uv,
-        du: grads[0],
-        dv: grads[1],
-    })
-}
-
 /// Relative Frobenius error of `j` against the f64 Jacobian at `(p, n)`.
 fn jacobian_error(m: &dyn Mapping, p: Vec3, n: Vec3, j: UvJacobian) -> Option<f64> {
     let r = m.uv_and_jacobian_f64(p.as_dvec3(), n.as_dvec3())?;
     let err = (j.du.as_dvec3() - r.du).length_squared() + (j.dv.as_dvec3() - r.dv).length_squared();
     let norm = r.du.length_squared() + r.dv.length_squared();
     Some((err / norm).sqrt())
-}
-
-/// Seeded points on the unit sphere away from the poles (or on the torus R = 2, r = ½).
-fn points(n: usize, torus: bool) -> Vec<(Vec3, Vec3)> {
-    let mut rng = XorShift::new(0x0b5e_2026);
-    (0..n)
-        .map(|_| {
-            let (st, ct) = rng.f32_in(0.0, std::f32::consts::TAU).sin_cos();
-            if torus {
-                let (sp, cp) = rng.f32_in(0.0, std::f32::consts::TAU).sin_cos();
-                let ring = 2.0 + 0.5 * cp;
-                (
-                    Vec3::new(ring * st, 0.5 * sp, ring * ct),
-                    Vec3::new(cp * st, sp, cp * ct),
-                )
-            } else {
-                let lat = rng.f32_in(-1.3, 1.3);
-                let n = Vec3::new(lat.cos() * st, lat.sin(), lat.cos() * ct);
-                (n, n)
-            }
-        })
-        .collect()
 }
 
 fn mappings() -> Vec<(&'static str, Box<dyn Mapping>)> {
@@ -98,7 +59,11 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
     let mut tables = Vec::new();
     for (name, m) in mappings() {
         progress(name);
-        let pts = points(settings.random, name.starts_with("Torus"));
+        let pts = surface_points(
+            &mut XorShift::new(0x0b5e_2026),
+            settings.random,
+            name.starts_with("Torus"),
+        );
         let m = m.as_ref();
         let analytic: Vec<f64> = pts
             .iter()
@@ -106,7 +71,7 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
             .collect();
         let finite_differences: Vec<f64> = pts
             .iter()
-            .filter_map(|&(p, n)| jacobian_error(m, p, n, fd_jacobian(m, p, n)?))
+            .filter_map(|&(p, n)| jacobian_error(m, p, n, finite_difference_jacobian(m, p, n, H)?))
             .collect();
         let mut table = Table {
             title: format!("{name}: Jacobian"),
@@ -130,7 +95,9 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
         table.rows.push(Row {
             method: format!("central finite differences of uv (h = {H})"),
             is_default: false,
-            ns: ns_per_call(&pts, settings.timing, |(p, n)| fd_jacobian(m, p, n)),
+            ns: ns_per_call(&pts, settings.timing, |(p, n)| {
+                finite_difference_jacobian(m, p, n, H)
+            }),
             abs: ErrorStats::of(finite_differences),
             ..Row::default()
         });
