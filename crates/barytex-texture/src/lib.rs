@@ -1,0 +1,39 @@
+//! Texel storage, exact sRGB and texture filtering.
+//!
+//! Storage and filtering are separate (pbrt's and wgpu's split): a [`Texture2d`] stores texels of
+//! one [`Texel`] format, a sampler descriptor says how to filter them.
+//!
+//! | concept | items |
+//! |---|---|
+//! | texel formats | [`Texel`], [`TextureFormat`], [`Srgba8`], [`Rgba8`], [`R8`], [`Rg8`], [`Rgba16f`], [`Rgba32f`], [`R32f`] |
+//! | storage | [`Texture2d`], [`Limits`], [`TextureError`] |
+//! | colour | [`srgb`]: exact decode table, correctly rounded encode |
+//!
+//! Conventions: texel (0, 0) is the top-left; texture coordinate (0, 0) is the top-left corner of
+//! texel (0, 0) and (1, 1) the bottom-right corner of the last texel (glTF, Vulkan). Colours handed
+//! to and from [`Texel`] are **linear light, straight (not premultiplied) alpha**; filters work on
+//! premultiplied linear values internally.
+//!
+//! ```
+//! use barytex_texture::{Srgba8, Texel, Texture2d};
+//!
+//! // A 2×1 sRGB texture: black and white.
+//! let texture = Texture2d::from_texels(2, 1, vec![Srgba8([0, 0, 0, 255]), Srgba8([255; 4])])?;
+//! assert_eq!(texture.texel(1, 0).map(Texel::to_linear).map(|c| c.x), Some(1.0));
+//! // Their linear-light mean encodes to byte 188, not to the sRGB mean 128.
+//! let mean = (texture.texels()[0].to_linear() + texture.texels()[1].to_linear()) / 2.0;
+//! assert_eq!(Srgba8::from_linear(mean).0[0], 188);
+//! # Ok::<(), barytex_texture::TextureError>(())
+//! ```
+#![forbid(unsafe_code)]
+
+mod error;
+mod limits;
+pub mod srgb;
+mod texel;
+mod texture2d;
+
+pub use error::TextureError;
+pub use limits::Limits;
+pub use texel::{R8, R32f, Rg8, Rgba8, Rgba16f, Rgba32f, Srgba8, Texel, TextureFormat};
+pub use texture2d::Texture2d;

@@ -1,0 +1,78 @@
+//! Size limits for untrusted input, checked before anything is allocated (image-rs's `Limits`).
+
+use crate::TextureError;
+
+/// The largest texture this crate will allocate. Loaders and constructors check these **before**
+/// allocating, so an image that claims to be 100000×100000 is refused, not attempted.
+///
+/// The defaults allow any texture a GPU allows (16384² RGBA32F is 4 GiB, so the byte limit of
+/// 1 GiB is what usually decides).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    /// Largest width in texels.
+    pub max_width: u32,
+    /// Largest height in texels (or depth, layers).
+    pub max_height: u32,
+    /// Largest allocation for one texture (a mip chain counts all its levels) in bytes.
+    pub max_bytes: u64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Self {
+            max_width: 16_384,
+            max_height: 16_384,
+            max_bytes: 1 << 30,
+        }
+    }
+}
+
+impl Limits {
+    /// No limit but the address space: for trusted, generated input.
+    pub const UNLIMITED: Self = Self {
+        max_width: u32::MAX,
+        max_height: u32::MAX,
+        max_bytes: u64::MAX,
+    };
+
+    /// Checks a `width × height` texture of `bytes_per_texel`-byte texels; returns its size in bytes.
+    ///
+    /// # Errors
+    /// [`TextureError::Empty`] for a zero side, [`TextureError::TooLarge`] beyond a limit.
+    pub fn check(
+        &self,
+        width: u32,
+        height: u32,
+        bytes_per_texel: usize,
+    ) -> Result<u64, TextureError> {
+        if width == 0 || height == 0 {
+            return Err(TextureError::Empty { width, height });
+        }
+        if width > self.max_width {
+            return Err(TextureError::TooLarge {
+                what: "width",
+                requested: width.into(),
+                limit: self.max_width.into(),
+            });
+        }
+        if height > self.max_height {
+            return Err(TextureError::TooLarge {
+                what: "height",
+                requested: height.into(),
+                limit: self.max_height.into(),
+            });
+        }
+        // u32 × u32 × (a texel's few bytes) fits u64 except for absurd texel sizes: saturate.
+        let bytes = u64::from(width)
+            .saturating_mul(u64::from(height))
+            .saturating_mul(bytes_per_texel as u64);
+        if bytes > self.max_bytes || usize::try_from(bytes).is_err() {
+            return Err(TextureError::TooLarge {
+                what: "bytes",
+                requested: bytes,
+                limit: self.max_bytes,
+            });
+        }
+        Ok(bytes)
+    }
+}

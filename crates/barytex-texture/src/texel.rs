@@ -1,0 +1,300 @@
+//! Texel formats: how one texel is stored and how it converts to and from linear-light RGBA.
+
+use glam::Vec4;
+use half::f16;
+
+use crate::srgb;
+
+/// The storage formats, named as wgpu names them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum TextureFormat {
+    /// 8-bit RGBA, sRGB-encoded colour, linear alpha (`Rgba8UnormSrgb`).
+    Rgba8UnormSrgb,
+    /// 8-bit RGBA, linear (`Rgba8Unorm`).
+    Rgba8Unorm,
+    /// 8-bit single channel, linear (`R8Unorm`).
+    R8Unorm,
+    /// 8-bit two channels, linear (`Rg8Unorm`).
+    Rg8Unorm,
+    /// 16-bit float RGBA (`Rgba16Float`).
+    Rgba16Float,
+    /// 32-bit float RGBA (`Rgba32Float`).
+    Rgba32Float,
+    /// 32-bit float single channel (`R32Float`).
+    R32Float,
+}
+
+impl TextureFormat {
+    /// Bytes per texel.
+    #[must_use]
+    pub const fn bytes_per_texel(self) -> usize {
+        match self {
+            Self::R8Unorm => 1,
+            Self::Rg8Unorm => 2,
+            Self::Rgba8UnormSrgb | Self::Rgba8Unorm | Self::R32Float => 4,
+            Self::Rgba16Float => 8,
+            Self::Rgba32Float => 16,
+        }
+    }
+
+    /// Whether colour channels are sRGB-encoded.
+    #[must_use]
+    pub const fn is_srgb(self) -> bool {
+        matches!(self, Self::Rgba8UnormSrgb)
+    }
+}
+
+/// One texel of a storage format.
+///
+/// `to_linear` gives linear-light RGBA with straight alpha; channels the format lacks read as GPUs
+/// read them: `(r, 0, 0, 1)` for one channel, `(r, g, 0, 1)` for two. `from_linear` rounds to
+/// nearest (sRGB: correctly rounded through [`srgb::encode`]), clamps unorm formats to [0, 1] and
+/// maps NaN to 0.
+pub trait Texel: Copy + Default + Send + Sync + core::fmt::Debug + 'static {
+    /// The storage format.
+    const FORMAT: TextureFormat;
+
+    /// This texel as linear-light RGBA, straight alpha.
+    #[must_use]
+    fn to_linear(self) -> Vec4;
+
+    /// The texel nearest a linear-light RGBA colour with straight alpha.
+    #[must_use]
+    fn from_linear(color: Vec4) -> Self;
+}
+
+/// `Rgba8UnormSrgb`: sRGB colour bytes, linear alpha byte.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[repr(transparent)]
+pub struct Srgba8(pub [u8; 4]);
+
+/// `Rgba8Unorm`: linear bytes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[repr(transparent)]
+pub struct Rgba8(pub [u8; 4]);
+
+/// `R8Unorm`: one linear byte.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[repr(transparent)]
+pub struct R8(pub u8);
+
+/// `Rg8Unorm`: two linear bytes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[repr(transparent)]
+pub struct Rg8(pub [u8; 2]);
+
+/// `Rgba16Float`: four half floats.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(transparent)]
+pub struct Rgba16f(pub [f16; 4]);
+
+/// `Rgba32Float`: four f32, also the linear-light working format.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(transparent)]
+pub struct Rgba32f(pub [f32; 4]);
+
+/// `R32Float`: one f32.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[repr(transparent)]
+pub struct R32f(pub f32);
+
+/// Byte → [0, 1], exact division (the f32 nearest `b / 255`).
+#[inline]
+fn unorm8_to_f32(b: u8) -> f32 {
+    f32::from(b) / 255.0
+}
+
+/// [0, 1] → nearest byte; NaN → 0.
+#[inline]
+fn f32_to_unorm8(x: f32) -> u8 {
+    let x = if x.is_nan() { 0.0 } else { x.clamp(0.0, 1.0) };
+    // x·255 + 0.5 ∈ [0.5, 255.5]: the truncating cast rounds half up and cannot overflow.
+    (x * 255.0 + 0.5) as u8
+}
+
+impl Texel for Srgba8 {
+    const FORMAT: TextureFormat = TextureFormat::Rgba8UnormSrgb;
+
+    #[inline]
+    fn to_linear(self) -> Vec4 {
+        let [r, g, b, a] = self.0;
+        Vec4::new(
+            srgb::decode(r),
+            srgb::decode(g),
+            srgb::decode(b),
+            unorm8_to_f32(a),
+        )
+    }
+
+    #[inline]
+    fn from_linear(c: Vec4) -> Self {
+        Self([
+            srgb::encode(c.x),
+            srgb::encode(c.y),
+            srgb::encode(c.z),
+            f32_to_unorm8(c.w),
+        ])
+    }
+}
+
+impl Texel for Rgba8 {
+    const FORMAT: TextureFormat = TextureFormat::Rgba8Unorm;
+
+    #[inline]
+    fn to_linear(self) -> Vec4 {
+        let [r, g, b, a] = self.0;
+        Vec4::new(
+            unorm8_to_f32(r),
+            unorm8_to_f32(g),
+            unorm8_to_f32(b),
+            unorm8_to_f32(a),
+        )
+    }
+
+    #[inline]
+    fn from_linear(c: Vec4) -> Self {
+        Self([
+            f32_to_unorm8(c.x),
+            f32_to_unorm8(c.y),
+            f32_to_unorm8(c.z),
+            f32_to_unorm8(c.w),
+        ])
+    }
+}
+
+impl Texel for R8 {
+    const FORMAT: TextureFormat = TextureFormat::R8Unorm;
+
+    #[inline]
+    fn to_linear(self) -> Vec4 {
+        Vec4::new(unorm8_to_f32(self.0), 0.0, 0.0, 1.0)
+    }
+
+    #[inline]
+    fn from_linear(c: Vec4) -> Self {
+        Self(f32_to_unorm8(c.x))
+    }
+}
+
+impl Texel for Rg8 {
+    const FORMAT: TextureFormat = TextureFormat::Rg8Unorm;
+
+    #[inline]
+    fn to_linear(self) -> Vec4 {
+        Vec4::new(unorm8_to_f32(self.0[0]), unorm8_to_f32(self.0[1]), 0.0, 1.0)
+    }
+
+    #[inline]
+    fn from_linear(c: Vec4) -> Self {
+        Self([f32_to_unorm8(c.x), f32_to_unorm8(c.y)])
+    }
+}
+
+/// NaN → 0, so a stored texel is never NaN.
+#[inline]
+fn finite_or_zero(x: f32) -> f32 {
+    if x.is_nan() { 0.0 } else { x }
+}
+
+impl Texel for Rgba16f {
+    const FORMAT: TextureFormat = TextureFormat::Rgba16Float;
+
+    #[inline]
+    fn to_linear(self) -> Vec4 {
+        let [r, g, b, a] = self.0;
+        Vec4::new(r.to_f32(), g.to_f32(), b.to_f32(), a.to_f32())
+    }
+
+    #[inline]
+    fn from_linear(c: Vec4) -> Self {
+        Self(c.to_array().map(|x| f16::from_f32(finite_or_zero(x))))
+    }
+}
+
+impl Texel for Rgba32f {
+    const FORMAT: TextureFormat = TextureFormat::Rgba32Float;
+
+    #[inline]
+    fn to_linear(self) -> Vec4 {
+        Vec4::from_array(self.0)
+    }
+
+    #[inline]
+    fn from_linear(c: Vec4) -> Self {
+        Self(c.to_array().map(finite_or_zero))
+    }
+}
+
+impl Texel for R32f {
+    const FORMAT: TextureFormat = TextureFormat::R32Float;
+
+    #[inline]
+    fn to_linear(self) -> Vec4 {
+        Vec4::new(self.0, 0.0, 0.0, 1.0)
+    }
+
+    #[inline]
+    fn from_linear(c: Vec4) -> Self {
+        Self(finite_or_zero(c.x))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn round_trips<T: Texel + PartialEq>(texel: T) {
+        assert_eq!(T::from_linear(texel.to_linear()), texel, "{texel:?}");
+    }
+
+    #[test]
+    fn byte_formats_round_trip_every_value() {
+        for b in 0..=255_u8 {
+            round_trips(Srgba8([b, b, b, b]));
+            round_trips(Rgba8([b, 255 - b, b, 255 - b]));
+            round_trips(R8(b));
+            round_trips(Rg8([b, 255 - b]));
+        }
+    }
+
+    #[test]
+    fn missing_channels_read_as_gpus_read_them() {
+        assert_eq!(R8(255).to_linear(), Vec4::new(1.0, 0.0, 0.0, 1.0));
+        assert_eq!(Rg8([0, 255]).to_linear(), Vec4::new(0.0, 1.0, 0.0, 1.0));
+        assert_eq!(R32f(0.25).to_linear(), Vec4::new(0.25, 0.0, 0.0, 1.0));
+    }
+
+    #[test]
+    fn bad_values_clamp_and_nan_is_zero() {
+        assert_eq!(
+            Rgba8::from_linear(Vec4::new(f32::NAN, -1.0, 2.0, f32::INFINITY)).0,
+            [0, 0, 255, 255]
+        );
+        assert_eq!(Rgba32f::from_linear(Vec4::splat(f32::NAN)).0, [0.0; 4]);
+        assert_eq!(
+            Rgba16f::from_linear(Vec4::splat(f32::NAN)).to_linear(),
+            Vec4::ZERO
+        );
+        assert_eq!(Srgba8::from_linear(Vec4::splat(f32::NAN)).0, [0; 4]);
+    }
+
+    #[test]
+    fn sizes_match_the_format() {
+        assert_eq!(
+            core::mem::size_of::<Srgba8>(),
+            Srgba8::FORMAT.bytes_per_texel()
+        );
+        assert_eq!(core::mem::size_of::<R8>(), R8::FORMAT.bytes_per_texel());
+        assert_eq!(core::mem::size_of::<Rg8>(), Rg8::FORMAT.bytes_per_texel());
+        assert_eq!(
+            core::mem::size_of::<Rgba16f>(),
+            Rgba16f::FORMAT.bytes_per_texel()
+        );
+        assert_eq!(
+            core::mem::size_of::<Rgba32f>(),
+            Rgba32f::FORMAT.bytes_per_texel()
+        );
+        assert_eq!(core::mem::size_of::<R32f>(), R32f::FORMAT.bytes_per_texel());
+    }
+}
