@@ -8,6 +8,9 @@
 //! | texel formats | [`Texel`], [`TextureFormat`], [`Srgba8`], [`Rgba8`], [`R8`], [`Rg8`], [`Rgba16f`], [`Rgba32f`], [`R32f`] |
 //! | storage | [`Texture2d`], [`Limits`], [`TextureError`] |
 //! | colour | [`srgb`]: exact decode table, correctly rounded encode |
+//! | mip chains | [`MipChain`], [`mip_chain::full_length`] |
+//! | the seam | [`Sampler`], [`SamplerDescriptor`] and its enums in [`sampler`] |
+//! | texel addressing (Vulkan) | [`addressing`]: [`wrap`](addressing::wrap), [`linear_taps`](addressing::linear_taps), [`nearest_index`](addressing::nearest_index) |
 //!
 //! Conventions: texel (0, 0) is the top-left; texture coordinate (0, 0) is the top-left corner of
 //! texel (0, 0) and (1, 1) the bottom-right corner of the last texel (glTF, Vulkan). Colours handed
@@ -27,13 +30,18 @@
 //! ```
 #![forbid(unsafe_code)]
 
+pub mod addressing;
 mod error;
 mod limits;
+pub mod mip_chain;
+pub mod sampler;
 pub mod srgb;
 mod texel;
 mod texture2d;
 
 pub use error::TextureError;
 pub use limits::Limits;
+pub use mip_chain::MipChain;
+pub use sampler::{Sampler, SamplerDescriptor};
 pub use texel::{R8, R32f, Rg8, Rgba8, Rgba16f, Rgba32f, Srgba8, Texel, TextureFormat};
 pub use texture2d::Texture2d;

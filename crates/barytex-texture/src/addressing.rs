@@ -1,0 +1,132 @@
+//! Texel addressing exactly as the Vulkan specification defines it ("Texel Coordinate Systems",
+//! "Wrapping Operation"): coordinates are scaled to texel space, floored to integer indices, and
+//! the address mode is applied to the **integers**.
+//!
+//! - nearest: `i = ⌊u·w⌋`
+//! - linear: `i₀ = ⌊u·w − ½⌋`, `i₁ = i₀ + 1`, `α = frac(u·w − ½)`
+//! - repeat: `i mod w`; mirrored repeat: `(w − 1) − mirror((i mod 2w) − w)` with
+//!   `mirror(n) = n ≥ 0 ? n : −(1 + n)`; clamp to edge: `clamp(i, 0, w − 1)`; clamp to border:
+//!   indices outside `[0, w)` read the border colour.
+//!
+//! Indices are `i64`, so `u·w` up to the f32 range neither overflows nor wraps wrongly; a NaN
+//! coordinate floors to index 0 (Rust's saturating float → int cast), documented rather than
+//! undefined.
+
+use crate::sampler::AddressMode;
+
+/// The texel index `⌊u·size⌋` of nearest filtering, before wrapping.
+#[must_use]
+#[inline]
+pub fn nearest_index(u: f32, size: u32) -> i64 {
+    // The cast saturates at ±2⁶³ and maps NaN to 0.
+    (u * size as f32).floor() as i64
+}
+
+/// The two texel indices and the blend weight of linear filtering along one axis, before
+/// wrapping: the result is `(1 − frac)·texel[i0] + frac·texel[i0 + 1]`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LinearTaps {
+    /// The lower index `⌊u·size − ½⌋`.
+    pub i0: i64,
+    /// The weight of texel `i0 + 1`, in [0, 1).
+    pub frac: f32,
+}
+
+/// The taps of linear filtering at coordinate `u` over `size` texels.
+///
+/// `u·size − ½` is computed in f32 (exactly, when `size` is a power of two and `u` a multiple of
+/// 2⁻²⁴); a non-finite `u` gives index 0 and weight 0.
+#[must_use]
+#[inline]
+pub fn linear_taps(u: f32, size: u32) -> LinearTaps {
+    let x = u * size as f32 - 0.5;
+    let floor = x.floor();
+    let frac = x - floor;
+    if frac.is_finite() {
+        LinearTaps {
+            i0: floor as i64,
+            frac,
+        }
+    } else {
+        LinearTaps { i0: 0, frac: 0.0 }
+    }
+}
+
+/// Applies an address mode to an integer texel index; `None` means "read the border colour"
+/// ([`AddressMode::ClampToBorder`] outside `[0, size)`). `size` must be at least 1 (every texture
+/// side is).
+#[must_use]
+#[inline]
+pub fn wrap(i: i64, size: u32, mode: AddressMode) -> Option<u32> {
+    let size = i64::from(size.max(1));
+    let wrapped = match mode {
+        AddressMode::ClampToEdge => i.clamp(0, size - 1),
+        AddressMode::Repeat => i.rem_euclid(size),
+        AddressMode::MirrorRepeat => {
+            let t = i.rem_euclid(2 * size) - size;
+            let mirror = if t >= 0 { t } else { -(1 + t) };
+            (size - 1) - mirror
+        }
+        AddressMode::ClampToBorder => {
+            if (0..size).contains(&i) {
+                i
+            } else {
+                return None;
+            }
+        }
+    };
+    // In [0, size) ⊂ u32.
+    u32::try_from(wrapped).ok()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nearest_and_linear_follow_the_spec_formulas() {
+        assert_eq!(nearest_index(0.0, 4), 0);
+        assert_eq!(nearest_index(0.999_999, 4), 3);
+        assert_eq!(nearest_index(-0.01, 4), -1);
+        // At a texel centre the linear taps put all weight on that texel.
+        assert_eq!(linear_taps(0.375, 4), LinearTaps { i0: 1, frac: 0.0 });
+        // Halfway between texel centres 1 and 2.
+        assert_eq!(linear_taps(0.5, 4), LinearTaps { i0: 1, frac: 0.5 });
+        assert_eq!(linear_taps(0.0, 4), LinearTaps { i0: -1, frac: 0.5 });
+        assert_eq!(linear_taps(f32::NAN, 4), LinearTaps { i0: 0, frac: 0.0 });
+    }
+
+    #[test]
+    fn wrap_modes_match_the_spec_on_a_range_of_indices() {
+        let size = 3;
+        let repeat: Vec<_> = (-4..5)
+            .map(|i| wrap(i, size, AddressMode::Repeat))
+            .collect();
+        assert_eq!(
+            repeat,
+            [2, 0, 1, 2, 0, 1, 2, 0, 1].map(Some).to_vec(),
+            "repeat"
+        );
+        let mirror: Vec<_> = (-4..7)
+            .map(|i| wrap(i, size, AddressMode::MirrorRepeat))
+            .collect();
+        // … 2 2 1 0 | 0 1 2 | 2 1 0 0 …
+        assert_eq!(
+            mirror,
+            [2, 2, 1, 0, 0, 1, 2, 2, 1, 0, 0].map(Some).to_vec(),
+            "mirror"
+        );
+        assert_eq!(wrap(-7, size, AddressMode::ClampToEdge), Some(0));
+        assert_eq!(wrap(9, size, AddressMode::ClampToEdge), Some(2));
+        assert_eq!(wrap(-1, size, AddressMode::ClampToBorder), None);
+        assert_eq!(wrap(3, size, AddressMode::ClampToBorder), None);
+        assert_eq!(
+            wrap(i64::MIN, size, AddressMode::MirrorRepeat).map(|i| i < 3),
+            Some(true)
+        );
+        assert_eq!(
+            wrap(i64::MAX, size, AddressMode::Repeat).map(|i| i < 3),
+            Some(true)
+        );
+    }
+}

@@ -1,0 +1,195 @@
+//! `SamplerDescriptor`: wgpu's sampler descriptor field for field, plus Vulkan's LOD bias, a cubic
+//! filter and the choice of anisotropic filter.
+
+/// What happens to texel coordinates outside the texture (wgpu `AddressMode`, Vulkan
+/// `VkSamplerAddressMode`). Applied to **integer texel indices**, as the Vulkan spec does.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum AddressMode {
+    /// Clamp to the first/last texel (`CLAMP_TO_EDGE`). The default, as in wgpu.
+    #[default]
+    ClampToEdge,
+    /// Tile (`REPEAT`).
+    Repeat,
+    /// Tile, flipping every other copy (`MIRRORED_REPEAT`).
+    MirrorRepeat,
+    /// Texels outside read the border colour (`CLAMP_TO_BORDER`).
+    ClampToBorder,
+}
+
+/// Filter within one level (wgpu `FilterMode`, plus Vulkan's `VK_FILTER_CUBIC_EXT`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum FilterMode {
+    /// The texel containing the coordinate.
+    #[default]
+    Nearest,
+    /// Bilinear: the 2×2 texels around the coordinate, weighted by distance.
+    Linear,
+    /// Bicubic: the 4×4 texels around the coordinate, weighted by a cubic kernel.
+    Cubic(CubicKernel),
+}
+
+/// Cubic kernels, all members of the Mitchell–Netravali (B, C) family.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum CubicKernel {
+    /// B = 0, C = 1/2: interpolating, sharp, may overshoot (Vulkan's cubic filter).
+    #[default]
+    CatmullRom,
+    /// B = 1, C = 0: smooth, never overshoots, blurs.
+    BSpline,
+    /// B = C = 1/3: Mitchell and Netravali's recommended compromise.
+    Mitchell,
+}
+
+/// Filter between mip levels (wgpu `MipmapFilterMode`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum MipmapFilterMode {
+    /// The nearest level.
+    #[default]
+    Nearest,
+    /// Blend the two nearest levels (trilinear with linear min/mag filters).
+    Linear,
+}
+
+/// The colour read outside the texture under [`AddressMode::ClampToBorder`] (wgpu
+/// `SamplerBorderColor`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum BorderColor {
+    /// (0, 0, 0, 0).
+    #[default]
+    TransparentBlack,
+    /// (0, 0, 0, 1).
+    OpaqueBlack,
+    /// (1, 1, 1, 1).
+    OpaqueWhite,
+    /// Zero in every channel, alpha included (wgpu's `Zero`, for integer formats).
+    Zero,
+}
+
+/// The depth-comparison function of a comparison sampler (wgpu `CompareFunction`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CompareFunction {
+    /// Never passes.
+    Never,
+    /// Passes if the reference is less than the texel.
+    Less,
+    /// Passes if equal.
+    Equal,
+    /// Passes if less or equal.
+    LessEqual,
+    /// Passes if greater.
+    Greater,
+    /// Passes if not equal.
+    NotEqual,
+    /// Passes if greater or equal.
+    GreaterEqual,
+    /// Always passes.
+    Always,
+}
+
+/// How minification with `anisotropy_clamp > 1` integrates the elliptical footprint.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum AnisotropicFilter {
+    /// GPU-style: trilinear probes spaced along the footprint's major axis, the level chosen from
+    /// the minor axis (Vulkan/D3D).
+    #[default]
+    Probes,
+    /// Elliptical weighted average with a Gaussian weight (Heckbert, pbrt-v4), bounded cost.
+    Ewa,
+}
+
+/// How to filter a texture: wgpu's `SamplerDescriptor` field for field (without the label), plus
+/// Vulkan's `mipLodBias`, a cubic filter and the choice of anisotropic filter.
+///
+/// The default is wgpu's default: clamp to edge, nearest everywhere, LOD clamp [0, 32], no
+/// comparison, anisotropy 1 (off), no border colour.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SamplerDescriptor {
+    /// Address mode along u.
+    pub address_mode_u: AddressMode,
+    /// Address mode along v.
+    pub address_mode_v: AddressMode,
+    /// Address mode along w (3D textures).
+    pub address_mode_w: AddressMode,
+    /// Filter when the texture is magnified (LOD ≤ 0).
+    pub mag_filter: FilterMode,
+    /// Filter when the texture is minified (LOD > 0).
+    pub min_filter: FilterMode,
+    /// Filter between mip levels.
+    pub mipmap_filter: MipmapFilterMode,
+    /// Smallest level of detail used.
+    pub lod_min_clamp: f32,
+    /// Largest level of detail used.
+    pub lod_max_clamp: f32,
+    /// Depth comparison (comparison samplers), `None` for colour sampling.
+    pub compare: Option<CompareFunction>,
+    /// Largest anisotropy ratio, 1 to 16; 1 turns anisotropic filtering off.
+    pub anisotropy_clamp: u16,
+    /// Colour outside the texture under [`AddressMode::ClampToBorder`]; `None` reads as
+    /// [`BorderColor::TransparentBlack`].
+    pub border_color: Option<BorderColor>,
+    /// Added to the computed level of detail before clamping (Vulkan `mipLodBias`).
+    pub lod_bias: f32,
+    /// The anisotropic filter used when `anisotropy_clamp > 1`.
+    pub anisotropic_filter: AnisotropicFilter,
+}
+
+impl Default for SamplerDescriptor {
+    fn default() -> Self {
+        Self {
+            address_mode_u: AddressMode::ClampToEdge,
+            address_mode_v: AddressMode::ClampToEdge,
+            address_mode_w: AddressMode::ClampToEdge,
+            mag_filter: FilterMode::Nearest,
+            min_filter: FilterMode::Nearest,
+            mipmap_filter: MipmapFilterMode::Nearest,
+            lod_min_clamp: 0.0,
+            lod_max_clamp: 32.0,
+            compare: None,
+            anisotropy_clamp: 1,
+            border_color: None,
+            lod_bias: 0.0,
+            anisotropic_filter: AnisotropicFilter::Probes,
+        }
+    }
+}
+
+impl SamplerDescriptor {
+    /// Bilinear within a level, nearest level: wgpu's common "linear" sampler without mip blending.
+    #[must_use]
+    pub fn bilinear() -> Self {
+        Self {
+            mag_filter: FilterMode::Linear,
+            min_filter: FilterMode::Linear,
+            ..Self::default()
+        }
+    }
+
+    /// Trilinear: bilinear within levels, linear between them.
+    #[must_use]
+    pub fn trilinear() -> Self {
+        Self {
+            mipmap_filter: MipmapFilterMode::Linear,
+            ..Self::bilinear()
+        }
+    }
+
+    /// Trilinear with GPU-style anisotropic probes, ratio clamped to `max_anisotropy` (1–16).
+    #[must_use]
+    pub fn anisotropic(max_anisotropy: u16) -> Self {
+        Self {
+            anisotropy_clamp: max_anisotropy.clamp(1, 16),
+            ..Self::trilinear()
+        }
+    }
+
+    /// The same address mode on every axis.
+    #[must_use]
+    pub fn with_address_mode(self, mode: AddressMode) -> Self {
+        Self {
+            address_mode_u: mode,
+            address_mode_v: mode,
+            address_mode_w: mode,
+            ..self
+        }
+    }
+}
