@@ -510,3 +510,25 @@ fn interpolate_polygon_lengths() {
         Some(Vec2::splat(3.0))
     );
 }
+
+/// Found by `total_on_any_bits`: a point so far outside a huge sliver that the normalising sum
+/// cancels completely (κ = 2.1e22). The computed weight has the wrong sign; the first-order bound
+/// `2⁻²⁶(1 + κ)|λ*|` was exceeded by a factor 1 + 3e-7, which is why the documented bound is now
+/// `d/(1 − d)` and promises nothing once `d ≥ ½`. The remaining invariants (finite, partition
+/// of unity, rotation) must still hold.
+#[test]
+fn wachspress_complete_cancellation_far_outside() {
+    let p = Vec2::new(-2.474_880_9e27, -6.412_152_6e22);
+    let poly = [
+        Vec2::new(-234_983.88, 0.0),
+        Vec2::new(0.0, 0.0),
+        Vec2::new(0.0, 2.012_659e37),
+    ];
+    assert_eq!(check_polygon_all(p, &poly), Ok(()));
+    let mut w = [0.0; 3];
+    assert_eq!(
+        wachspress_weights(p, &poly, &mut w),
+        Ok(PolygonLocation::Outside)
+    );
+    assert!(w.iter().all(|x| x.is_finite()), "{w:?}");
+}

@@ -43,8 +43,10 @@ use crate::determinant::orient2d_det;
 /// Inside and on the boundary, each weight is within 1 ulp of the exact rational Wachspress
 /// weight of the f32 inputs, whatever the scale (tested from 1e-30 to 1e30), offset or
 /// closeness to an edge; hence `|Σλᵢ − 1| ≤ ε` and `|Σλᵢ(vᵢ − p)| ≤ ε·Σλᵢ|vᵢ − p|` (linear
-/// precision, `ε = 2⁻²³`). Outside, `|λᵢ − λᵢ*| ≤ 2⁻²⁶·(1 + κ)·|λᵢ*| + 1 ulp` with
-/// `κ = Σ|wⱼ|/|Σwⱼ|` the condition number of the normalising sum; partition of unity and linear
+/// precision, `ε = 2⁻²³`). Outside, `|λᵢ − λᵢ*| ≤ d/(1 − d)·|λᵢ*| + 1 ulp` with
+/// `d = 2⁻²⁶·(1 + κ)` and `κ = Σ|wⱼ|/|Σwⱼ|` the condition number of the normalising sum; where
+/// `d ≥ ½` (points so far out that the sum cancels completely, κ ≳ 3·10⁷) the weights carry no
+/// correct digit and only finiteness and the partition below are promised; partition of unity and linear
 /// precision hold within `ε·Σ|λᵢ|` and `ε·Σ|λᵢ||vᵢ − p|` (plus `n·2⁻¹⁴⁹·max|vᵢ − p|` for weights
 /// in f32's subnormal range). Tests: `polygon_coordinates.rs::{wachspress_matches_exact,
 /// wachspress_outside_within_condition_bound, hard_cases_hold}` through
