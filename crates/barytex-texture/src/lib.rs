@@ -42,6 +42,6 @@ mod texture2d;
 pub use error::TextureError;
 pub use limits::Limits;
 pub use mip_chain::MipChain;
-pub use sampler::{Sampler, SamplerDescriptor};
+pub use sampler::{Sampler, SamplerDescriptor, TextureSampler};
 pub use texel::{R8, R32f, Rg8, Rgba8, Rgba16f, Rgba32f, Srgba8, Texel, TextureFormat};
 pub use texture2d::Texture2d;

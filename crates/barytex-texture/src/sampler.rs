@@ -4,7 +4,14 @@
 //! Image textures, procedural textures and the supersampled reference all implement [`Sampler`],
 //! so every filter can be measured against the same ground truth.
 
+mod anisotropic;
+mod cubic;
 pub mod descriptor;
+mod ewa;
+mod level_filters;
+pub mod lod;
+mod texel_fetch;
+mod texture_sampler;
 
 use glam::{Vec2, Vec4};
 
@@ -12,6 +19,7 @@ pub use descriptor::{
     AddressMode, AnisotropicFilter, BorderColor, CompareFunction, CubicKernel, FilterMode,
     MipmapFilterMode, SamplerDescriptor,
 };
+pub use texture_sampler::TextureSampler;
 
 /// Anything that turns a texture coordinate into a filtered linear-light colour.
 ///

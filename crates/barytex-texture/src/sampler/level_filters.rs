@@ -1,0 +1,60 @@
+//! Filtering within one mip level: nearest, bilinear, bicubic. All return **premultiplied**
+//! linear colour; texel addressing follows the Vulkan formulas of [`crate::addressing`].
+
+use glam::{Vec2, Vec4};
+
+use crate::addressing::{linear_taps, nearest_index};
+use crate::sampler::CubicKernel;
+use crate::sampler::texel_fetch::{Addressing, fetch};
+use crate::{Texel, Texture2d};
+
+/// The texel containing `uv` (`⌊u·w⌋`, `⌊v·h⌋`).
+#[must_use]
+#[inline]
+pub(crate) fn nearest<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing) -> Vec4 {
+    let (w, h) = level.size();
+    fetch(level, nearest_index(uv.x, w), nearest_index(uv.y, h), a)
+}
+
+/// Bilinear: two horizontal lerps, then one vertical (seed 001), in the form `a + (b − a)·t`,
+/// so a texel centre returns that texel exactly and a constant stays constant exactly.
+#[must_use]
+#[inline]
+pub(crate) fn bilinear<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing) -> Vec4 {
+    let (w, h) = level.size();
+    let tx = linear_taps(uv.x, w);
+    let ty = linear_taps(uv.y, h);
+    let (x0, y0) = (tx.i0, ty.i0);
+    let c00 = fetch(level, x0, y0, a);
+    let c10 = fetch(level, x0 + 1, y0, a);
+    let c01 = fetch(level, x0, y0 + 1, a);
+    let c11 = fetch(level, x0 + 1, y0 + 1, a);
+    let top = c00 + (c10 - c00) * tx.frac;
+    let bottom = c01 + (c11 - c01) * tx.frac;
+    top + (bottom - top) * ty.frac
+}
+
+/// Bicubic over the 4×4 texels around `uv`, separable, with the weights of `kernel`.
+#[must_use]
+pub(crate) fn bicubic<T: Texel>(
+    level: &Texture2d<T>,
+    uv: Vec2,
+    kernel: CubicKernel,
+    a: &Addressing,
+) -> Vec4 {
+    let (w, h) = level.size();
+    let tx = linear_taps(uv.x, w);
+    let ty = linear_taps(uv.y, h);
+    let wx = kernel.taps(tx.frac);
+    let wy = kernel.taps(ty.frac);
+    let mut sum = Vec4::ZERO;
+    for (j, wyj) in wy.iter().enumerate() {
+        let y = ty.i0 - 1 + j as i64;
+        let mut row = Vec4::ZERO;
+        for (i, wxi) in wx.iter().enumerate() {
+            row += fetch(level, tx.i0 - 1 + i as i64, y, a) * *wxi;
+        }
+        sum += row * *wyj;
+    }
+    sum
+}

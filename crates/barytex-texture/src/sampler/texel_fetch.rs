@@ -1,0 +1,70 @@
+//! Reading one texel for filtering: address modes applied to integer indices, border colour,
+//! conversion to **premultiplied** linear light (filters blend premultiplied colours so a
+//! transparent texel's colour cannot bleed into its neighbours).
+
+use glam::Vec4;
+
+use crate::addressing::wrap;
+use crate::sampler::{AddressMode, BorderColor};
+use crate::{Texel, Texture2d};
+
+/// The address modes and border of one filtering operation, resolved once per lookup.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Addressing {
+    pub(crate) u: AddressMode,
+    pub(crate) v: AddressMode,
+    /// The border colour, premultiplied (all border colours are already).
+    pub(crate) border: Vec4,
+}
+
+impl Addressing {
+    pub(crate) fn new(u: AddressMode, v: AddressMode, border: Option<BorderColor>) -> Self {
+        Self {
+            u,
+            v,
+            border: border_value(border.unwrap_or_default()),
+        }
+    }
+}
+
+/// The linear RGBA value of a border colour (premultiplied and straight are the same for these).
+#[must_use]
+pub(crate) fn border_value(border: BorderColor) -> Vec4 {
+    match border {
+        BorderColor::TransparentBlack | BorderColor::Zero => Vec4::ZERO,
+        BorderColor::OpaqueBlack => Vec4::new(0.0, 0.0, 0.0, 1.0),
+        BorderColor::OpaqueWhite => Vec4::ONE,
+    }
+}
+
+/// Straight → premultiplied alpha.
+#[must_use]
+#[inline]
+pub(crate) fn premultiply(c: Vec4) -> Vec4 {
+    Vec4::new(c.x * c.w, c.y * c.w, c.z * c.w, c.w)
+}
+
+/// Premultiplied → straight alpha; alpha ≤ 0 (or NaN) gives transparent black.
+#[must_use]
+#[inline]
+pub(crate) fn unpremultiply(c: Vec4) -> Vec4 {
+    if c.w > 0.0 {
+        let inv = 1.0 / c.w;
+        Vec4::new(c.x * inv, c.y * inv, c.z * inv, c.w)
+    } else {
+        Vec4::ZERO
+    }
+}
+
+/// Texel `(x, y)` of `texture` (indices before wrapping), premultiplied linear, or the border.
+#[must_use]
+#[inline]
+pub(crate) fn fetch<T: Texel>(texture: &Texture2d<T>, x: i64, y: i64, a: &Addressing) -> Vec4 {
+    let (w, h) = texture.size();
+    match (wrap(x, w, a.u), wrap(y, h, a.v)) {
+        (Some(x), Some(y)) => {
+            premultiply(texture.texels()[y as usize * w as usize + x as usize].to_linear())
+        }
+        _ => a.border,
+    }
+}

@@ -1,0 +1,226 @@
+//! `TextureSampler`: a mip chain plus a [`SamplerDescriptor`], implementing [`Sampler`] the way
+//! the Vulkan specification defines texel filtering.
+
+use glam::{Vec2, Vec4};
+
+use crate::sampler::texel_fetch::{Addressing, unpremultiply};
+use crate::sampler::{
+    AnisotropicFilter, FilterMode, MipmapFilterMode, Sampler, SamplerDescriptor, anisotropic, ewa,
+    level_filters, lod,
+};
+use crate::{MipChain, Texel, Texture2d};
+
+/// A texture (its mip chain) with the sampler state that filters it.
+///
+/// # Documented values for bad input
+/// - a non-finite `uv` gives transparent black `(0, 0, 0, 0)`;
+/// - a zero footprint magnifies (level 0, `mag_filter`); a NaN or infinite derivative is treated
+///   as an unmeasurably large footprint: the most blurred level the clamps allow;
+/// - a level of detail beyond the chain uses its last level.
+///
+/// # Accuracy
+/// Texel addressing and weights are computed in f32 exactly as the Vulkan formulas state (see
+/// [`crate::addressing`]); bilinear blends in the form `a + (b − a)·t`, so a texel centre returns
+/// its texel exactly, a constant texture returns the constant exactly, and every result lies within
+/// the range of the texels it blends expanded by 4 ulp (the premultiplied blend plus the
+/// un-premultiplying division). Tested in `tests/sampling.rs`.
+#[derive(Clone, Debug)]
+pub struct TextureSampler<T> {
+    chain: MipChain<T>,
+    descriptor: SamplerDescriptor,
+    addressing: Addressing,
+}
+
+impl<T: Texel> TextureSampler<T> {
+    /// A sampler over `chain`. The descriptor is sanitised: NaN LOD clamps and bias become the
+    /// defaults (0, 32, 0), `lod_max_clamp < lod_min_clamp` is raised to `lod_min_clamp`, and
+    /// `anisotropy_clamp` is clamped to 1..=16.
+    #[must_use]
+    pub fn new(chain: MipChain<T>, descriptor: SamplerDescriptor) -> Self {
+        let mut d = descriptor;
+        if d.lod_min_clamp.is_nan() {
+            d.lod_min_clamp = 0.0;
+        }
+        if d.lod_max_clamp.is_nan() {
+            d.lod_max_clamp = 32.0;
+        }
+        d.lod_max_clamp = d.lod_max_clamp.max(d.lod_min_clamp);
+        if !d.lod_bias.is_finite() {
+            d.lod_bias = 0.0;
+        }
+        d.anisotropy_clamp = d.anisotropy_clamp.clamp(1, 16);
+        let addressing = Addressing::new(d.address_mode_u, d.address_mode_v, d.border_color);
+        Self {
+            chain,
+            descriptor: d,
+            addressing,
+        }
+    }
+
+    /// A sampler over a single-level texture (no mip chain: minification aliases).
+    #[must_use]
+    pub fn single_level(texture: Texture2d<T>, descriptor: SamplerDescriptor) -> Self {
+        Self::new(MipChain::single(texture), descriptor)
+    }
+
+    /// The mip chain.
+    #[must_use]
+    pub fn chain(&self) -> &MipChain<T> {
+        &self.chain
+    }
+
+    /// The (sanitised) descriptor.
+    #[must_use]
+    pub fn descriptor(&self) -> &SamplerDescriptor {
+        &self.descriptor
+    }
+
+    /// The level of detail for a footprint: `log₂ ρ` (see [`lod::lod`]) plus the descriptor's
+    /// bias plus `extra_bias`, clamped to `[lod_min_clamp, lod_max_clamp]`.
+    #[must_use]
+    pub fn lod(&self, ddx: Vec2, ddy: Vec2, extra_bias: f32) -> f32 {
+        let raw = lod::lod(ddx, ddy, self.chain.base().size());
+        self.clamp_lod(raw + extra_bias)
+    }
+
+    /// `sample` with an extra LOD bias (GLSL `texture(s, uv, bias)`).
+    #[must_use]
+    pub fn sample_bias(&self, uv: Vec2, ddx: Vec2, ddy: Vec2, bias: f32) -> Vec4 {
+        let bias = if bias.is_finite() { bias } else { 0.0 };
+        self.sample_biased(uv, ddx, ddy, bias)
+    }
+
+    /// Bias and clamp a level of detail (NaN → the maximum level, as an unmeasurable footprint).
+    fn clamp_lod(&self, lod: f32) -> f32 {
+        let d = &self.descriptor;
+        let biased = lod + d.lod_bias;
+        if biased.is_nan() {
+            d.lod_max_clamp
+        } else {
+            biased.clamp(d.lod_min_clamp, d.lod_max_clamp)
+        }
+    }
+
+    fn sample_biased(&self, uv: Vec2, ddx: Vec2, ddy: Vec2, bias: f32) -> Vec4 {
+        if !uv.is_finite() {
+            return Vec4::ZERO;
+        }
+        let d = &self.descriptor;
+        if d.anisotropy_clamp > 1 {
+            let footprint = anisotropic::Footprint::new(ddx, ddy, self.chain.base().size());
+            if let Some(footprint) = footprint {
+                let max = f32::from(d.anisotropy_clamp);
+                return match d.anisotropic_filter {
+                    AnisotropicFilter::Probes => {
+                        let plan = footprint.probes(max);
+                        let lod = self.clamp_lod(plan.lod + bias);
+                        if lod <= 0.0 {
+                            unpremultiply(self.filter_premultiplied(uv, lod))
+                        } else {
+                            let mut sum = Vec4::ZERO;
+                            for i in 0..plan.count {
+                                sum += self.filter_premultiplied(uv + plan.offset(i), lod);
+                            }
+                            unpremultiply(sum / plan.count as f32)
+                        }
+                    }
+                    AnisotropicFilter::Ewa => {
+                        let ellipse = footprint.ewa_ellipse(max);
+                        let lod = self.clamp_lod(ellipse.lod + bias);
+                        unpremultiply(self.ewa_premultiplied(uv, &ellipse, lod))
+                    }
+                };
+            }
+        }
+        let lod = self.clamp_lod(lod::lod(ddx, ddy, self.chain.base().size()) + bias);
+        unpremultiply(self.filter_premultiplied(uv, lod))
+    }
+
+    /// Mag/min/mip filtering at a (biased, clamped) level of detail; premultiplied result.
+    fn filter_premultiplied(&self, uv: Vec2, lod: f32) -> Vec4 {
+        let d = &self.descriptor;
+        if lod <= 0.0 {
+            return self.filter_level(0, uv, d.mag_filter);
+        }
+        let last = self.chain.len() - 1;
+        match d.mipmap_filter {
+            MipmapFilterMode::Nearest => {
+                // Vulkan: d = ⌈λ + ½⌉ − 1, clamped to the chain.
+                let level = ((lod + 0.5).ceil() - 1.0).max(0.0);
+                self.filter_level(to_level(level, last), uv, d.min_filter)
+            }
+            MipmapFilterMode::Linear => {
+                let floor = lod.floor();
+                let lo = to_level(floor, last);
+                let hi = to_level(floor + 1.0, last);
+                let a = self.filter_level(lo, uv, d.min_filter);
+                if hi == lo {
+                    return a;
+                }
+                let b = self.filter_level(hi, uv, d.min_filter);
+                a + (b - a) * (lod - floor)
+            }
+        }
+    }
+
+    fn filter_level(&self, level: usize, uv: Vec2, filter: FilterMode) -> Vec4 {
+        let texture = &self.chain.levels()[level];
+        match filter {
+            FilterMode::Nearest => level_filters::nearest(texture, uv, &self.addressing),
+            FilterMode::Linear => level_filters::bilinear(texture, uv, &self.addressing),
+            FilterMode::Cubic(kernel) => {
+                level_filters::bicubic(texture, uv, kernel, &self.addressing)
+            }
+        }
+    }
+
+    /// EWA between the two levels around `lod`. Where a LOD clamp forces a level so fine that
+    /// the ellipse spans more than [`ewa::MAX_TEXELS`] texels, the level the ellipse itself selects
+    /// is used instead: the clamp is honoured wherever it can be at bounded cost.
+    fn ewa_premultiplied(&self, uv: Vec2, ellipse: &ewa::Ellipse, lod: f32) -> Vec4 {
+        let last = self.chain.len() - 1;
+        if lod >= last as f32 {
+            // The footprint covers the whole texture: its last level.
+            return level_filters::bilinear(&self.chain.levels()[last], uv, &self.addressing);
+        }
+        let floor = lod.floor();
+        let lo = to_level(floor, last);
+        let hi = to_level(floor + 1.0, last);
+        let levels = self.chain.levels();
+        let filtered = ewa::filter(&levels[lo], uv, ellipse, &self.addressing).and_then(|a| {
+            if hi == lo {
+                return Some(a);
+            }
+            let b = ewa::filter(&levels[hi], uv, ellipse, &self.addressing)?;
+            Some(a + (b - a) * (lod - floor))
+        });
+        match filtered {
+            Some(c) => c,
+            None if ellipse.lod > lod => self.ewa_premultiplied(uv, ellipse, ellipse.lod),
+            None => level_filters::bilinear(&levels[last], uv, &self.addressing),
+        }
+    }
+}
+
+/// A non-negative, finite level number as an index clamped to `last`.
+fn to_level(level: f32, last: usize) -> usize {
+    if level >= last as f32 {
+        last
+    } else {
+        // 0 ≤ level < last ≤ usize range.
+        level.max(0.0) as usize
+    }
+}
+
+impl<T: Texel> Sampler for TextureSampler<T> {
+    fn sample(&self, uv: Vec2, ddx: Vec2, ddy: Vec2) -> Vec4 {
+        self.sample_biased(uv, ddx, ddy, 0.0)
+    }
+
+    fn sample_level(&self, uv: Vec2, lod: f32) -> Vec4 {
+        if !uv.is_finite() {
+            return Vec4::ZERO;
+        }
+        unpremultiply(self.filter_premultiplied(uv, self.clamp_lod(lod)))
+    }
+}
