@@ -8,7 +8,7 @@
 //! | texel formats | [`Texel`], [`TextureFormat`], [`Srgba8`], [`Rgba8`], [`R8`], [`Rg8`], [`Rgba16f`], [`Rgba32f`], [`R32f`] |
 //! | storage | [`Texture2d`], [`Limits`], [`TextureError`] |
 //! | colour | [`srgb`]: exact decode table, correctly rounded encode |
-//! | mip chains | [`MipChain`], [`mip_chain::full_length`] |
+//! | mip chains | [`MipChain`], [`MipChain::generate`] with [`MipOptions`] ([`MipFilter`]: box for any size, Kaiser, Lanczos-3; [`MipColorSpace`]: linear light or sRGB-naive; alpha coverage) |
 //! | the seam | [`Sampler`], [`SamplerDescriptor`] and its enums in [`sampler`] |
 //! | texel addressing (Vulkan) | [`addressing`]: [`wrap`](addressing::wrap), [`linear_taps`](addressing::linear_taps), [`nearest_index`](addressing::nearest_index) |
 //!
@@ -34,6 +34,7 @@ pub mod addressing;
 mod error;
 mod limits;
 pub mod mip_chain;
+pub mod mip_generation;
 pub mod sampler;
 pub mod srgb;
 mod texel;
@@ -42,6 +43,7 @@ mod texture2d;
 pub use error::TextureError;
 pub use limits::Limits;
 pub use mip_chain::MipChain;
+pub use mip_generation::{MipColorSpace, MipFilter, MipOptions};
 pub use sampler::{Sampler, SamplerDescriptor, TextureSampler};
 pub use texel::{R8, R32f, Rg8, Rgba8, Rgba16f, Rgba32f, Srgba8, Texel, TextureFormat};
 pub use texture2d::Texture2d;

@@ -10,7 +10,7 @@ pub mod descriptor;
 mod ewa;
 mod level_filters;
 pub mod lod;
-mod texel_fetch;
+pub(crate) mod texel_fetch;
 mod texture_sampler;
 
 use glam::{Vec2, Vec4};

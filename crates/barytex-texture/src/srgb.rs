@@ -33,10 +33,42 @@ pub fn decode(byte: u8) -> f32 {
 #[must_use]
 #[inline]
 pub fn encode(linear: f32) -> u8 {
-    // The number of thresholds ≤ x is the byte. NaN compares false everywhere: 0.
-    let count = ENCODE_THRESHOLDS.partition_point(|&t| t <= linear);
-    // partition_point returns at most 255.
-    u8::try_from(count).unwrap_or(u8::MAX)
+    // The byte is the number of thresholds ≤ x. A bucket table gives a lower bound for it in one
+    // lookup; at most two thresholds lie in a bucket, so the loop runs at most twice.
+    if linear.is_nan() || linear <= 0.0 {
+        return 0; // ≤ 0 and NaN
+    }
+    if linear >= 1.0 {
+        return 255;
+    }
+    // 0 < x < 1, and x·4096 is exact: the floor is the bucket.
+    let mut byte = BUCKET_START[(linear * BUCKETS as f32) as usize];
+    while byte < 255 && linear >= ENCODE_THRESHOLDS[usize::from(byte)] {
+        byte += 1;
+    }
+    byte
+}
+
+/// The number of buckets of [`BUCKET_START`] over [0, 1).
+const BUCKETS: usize = 4096;
+
+/// `BUCKET_START[k]`: the byte that `k / BUCKETS` encodes to — a lower bound for every value in
+/// bucket `k`, since encoding is monotone.
+static BUCKET_START: [u8; BUCKETS] = bucket_starts();
+
+const fn bucket_starts() -> [u8; BUCKETS] {
+    let mut table = [0_u8; BUCKETS];
+    let mut k = 0;
+    let mut byte = 0_usize;
+    while k < BUCKETS {
+        let x = k as f32 / BUCKETS as f32;
+        while byte < 255 && x >= ENCODE_THRESHOLDS[byte] {
+            byte += 1;
+        }
+        table[k] = byte as u8;
+        k += 1;
+    }
+    table
 }
 
 /// The continuous sRGB → linear transfer function on [0, 1] (values outside are clamped, NaN gives
@@ -95,6 +127,28 @@ mod tests {
         }
         assert_eq!(decode(0), 0.0);
         assert_eq!(decode(255), 1.0);
+    }
+
+    #[test]
+    fn encode_equals_counting_thresholds_on_a_dense_sweep() {
+        // Every 64th f32 in (0, 1), plus all bucket boundaries' neighbours.
+        let count = |x: f32| ENCODE_THRESHOLDS.partition_point(|&t| t <= x);
+        let mut bits = 1_u32;
+        while f32::from_bits(bits) < 1.0 {
+            let x = f32::from_bits(bits);
+            assert_eq!(usize::from(encode(x)), count(x), "x = {x:e}");
+            bits += 64;
+        }
+        for k in 0..BUCKETS {
+            let x = k as f32 / BUCKETS as f32;
+            for y in [
+                x,
+                f32::from_bits(x.to_bits().saturating_sub(1)),
+                f32::from_bits(x.to_bits() + 1),
+            ] {
+                assert_eq!(usize::from(encode(y)), count(y), "y = {y:e}");
+            }
+        }
     }
 
     #[test]

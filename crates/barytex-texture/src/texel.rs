@@ -62,6 +62,22 @@ pub trait Texel: Copy + Default + Send + Sync + core::fmt::Debug + 'static {
     /// The texel nearest a linear-light RGBA colour with straight alpha.
     #[must_use]
     fn from_linear(color: Vec4) -> Self;
+
+    /// The stored values as numbers, **without** colour decoding: for sRGB formats the encoded
+    /// values (byte / 255), for every other format the same as [`to_linear`](Self::to_linear).
+    /// Filtering these is the "sRGB-naive" path GPUs and most resizers take (kept for comparison).
+    #[must_use]
+    #[inline]
+    fn to_stored(self) -> Vec4 {
+        self.to_linear()
+    }
+
+    /// The inverse of [`to_stored`](Self::to_stored): the nearest texel to stored values.
+    #[must_use]
+    #[inline]
+    fn from_stored(values: Vec4) -> Self {
+        Self::from_linear(values)
+    }
 }
 
 /// `Rgba8UnormSrgb`: sRGB colour bytes, linear alpha byte.
@@ -135,6 +151,24 @@ impl Texel for Srgba8 {
             srgb::encode(c.z),
             f32_to_unorm8(c.w),
         ])
+    }
+
+    #[inline]
+    fn to_stored(self) -> Vec4 {
+        self.bytes_as_unorm()
+    }
+
+    #[inline]
+    fn from_stored(values: Vec4) -> Self {
+        Self(Rgba8::from_linear(values).0)
+    }
+}
+
+impl Srgba8 {
+    /// The stored bytes as numbers in [0, 1] (no decoding).
+    #[inline]
+    fn bytes_as_unorm(self) -> Vec4 {
+        Rgba8(self.0).to_linear()
     }
 }
 

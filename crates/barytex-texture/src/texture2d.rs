@@ -92,7 +92,20 @@ impl<T: Texel> Texture2d<T> {
     /// # Errors
     /// A zero side, a size beyond the limits, or a length that is not `width × height`.
     pub fn from_texels(width: u32, height: u32, texels: Vec<T>) -> Result<Self, TextureError> {
-        Limits::default().check(width, height, T::FORMAT.bytes_per_texel())?;
+        Self::from_texels_with_limits(width, height, texels, &Limits::default())
+    }
+
+    /// [`from_texels`](Self::from_texels) under the caller's limits.
+    ///
+    /// # Errors
+    /// A zero side, a size beyond the limits, or a length that is not `width × height`.
+    pub fn from_texels_with_limits(
+        width: u32,
+        height: u32,
+        texels: Vec<T>,
+        limits: &Limits,
+    ) -> Result<Self, TextureError> {
+        limits.check(width, height, T::FORMAT.bytes_per_texel())?;
         let expected = u64::from(width) * u64::from(height);
         if texels.len() as u64 != expected {
             return Err(TextureError::DataLength {

@@ -1,0 +1,103 @@
+//! The box reduction for any size: 2 taps per axis for an even side, the 3-tap polyphase box
+//! for an odd side (each output texel integrates exactly `w/⌊w/2⌋` source texels), a copy for a
+//! side of 1.
+
+use glam::Vec4;
+
+use super::{Plane, Source};
+use crate::TextureError;
+
+/// The source taps and weights of output index `i` along an axis of `n` source texels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct AxisTaps {
+    pub(crate) first: u32,
+    pub(crate) weights: [f32; 3],
+    pub(crate) count: usize,
+}
+
+pub(crate) fn axis_taps(i: u32, n: u32) -> AxisTaps {
+    if n <= 1 {
+        AxisTaps {
+            first: 0,
+            weights: [1.0, 0.0, 0.0],
+            count: 1,
+        }
+    } else if n.is_multiple_of(2) {
+        AxisTaps {
+            first: 2 * i,
+            weights: [0.5, 0.5, 0.0],
+            count: 2,
+        }
+    } else {
+        // n = 2m + 1: output i covers source [i·n/m, (i + 1)·n/m); in units of 1/n of the
+        // output footprint the three texels contribute m − i, m and i + 1.
+        let m = n / 2;
+        let nf = n as f32;
+        AxisTaps {
+            first: 2 * i,
+            weights: [(m - i) as f32 / nf, m as f32 / nf, (i + 1) as f32 / nf],
+            count: 3,
+        }
+    }
+}
+
+/// One box reduction of `source`.
+pub(crate) fn reduce(source: &impl Source) -> Result<Plane, TextureError> {
+    let (w, h) = source.size();
+    let (w2, h2) = ((w / 2).max(1), (h / 2).max(1));
+    let mut out = Plane::with_capacity(w2, h2)?;
+    if w.is_multiple_of(2) && h.is_multiple_of(2) {
+        // The common case, without per-texel tap bookkeeping.
+        for y in 0..h2 {
+            let (y0, y1) = (2 * y, 2 * y + 1);
+            for x in 0..w2 {
+                let (x0, x1) = (2 * x, 2 * x + 1);
+                let sum = (source.get(x0, y0) + source.get(x1, y0))
+                    + (source.get(x0, y1) + source.get(x1, y1));
+                out.values.push(sum * 0.25);
+            }
+        }
+        return Ok(out);
+    }
+    let x_taps: Vec<AxisTaps> = (0..w2).map(|x| axis_taps(x, w)).collect();
+    for y in 0..h2 {
+        let ty = axis_taps(y, h);
+        for tx in &x_taps {
+            let mut sum = Vec4::ZERO;
+            for b in 0..ty.count {
+                let sy = ty.first + b as u32;
+                let mut row = Vec4::ZERO;
+                for a in 0..tx.count {
+                    row += source.get(tx.first + a as u32, sy) * tx.weights[a];
+                }
+                sum += row * ty.weights[b];
+            }
+            out.values.push(sum);
+        }
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_source_texel_gets_the_same_total_weight() {
+        for n in 1..40 {
+            let m = (n / 2).max(1);
+            let mut total = vec![0.0_f64; n as usize];
+            for i in 0..m {
+                let t = axis_taps(i, n);
+                for a in 0..t.count {
+                    total[(t.first as usize) + a] += f64::from(t.weights[a]);
+                }
+            }
+            // Each source texel contributes m/n of an output texel (1 for n = 1).
+            let want = f64::from(m) / f64::from(n);
+            for (j, got) in total.iter().enumerate() {
+                assert!((got - want).abs() < 1e-6, "n={n} j={j}: {got} vs {want}");
+            }
+        }
+    }
+}
