@@ -13,6 +13,7 @@
 //! - [`seeded`]: a seeded generator and input shapes shared by the benchmarks and the report.
 //! - [`uv`](mod@uv): seeded surface points and the finite-difference Jacobian for barytex-uv's
 //!   benchmarks and report.
+//! - [`sampling_invariants`]: dEQP-style allowed-result boxes for texture lookups.
 //! - [`ulp`]: distances in units in the last place.
 //! - [`components`]: flatten any interpolable value into `f64` components for comparisons.
 //! - [`fuzz_inputs`]: the fuzz targets' byte layouts, shared with the regression replay.
@@ -25,6 +26,7 @@ pub mod invariants;
 pub mod invariants_3d;
 pub mod polygon_invariants;
 pub mod reference;
+pub mod sampling_invariants;
 pub mod seeded;
 pub mod sphere;
 pub mod strategies;

@@ -8,7 +8,10 @@
 //!   `mirror(n) = n ≥ 0 ? n : −(1 + n)`; clamp to edge: `clamp(i, 0, w − 1)`; clamp to border:
 //!   indices outside `[0, w)` read the border colour.
 //!
-//! Indices are `i64`, so `u·w` up to the f32 range neither overflows nor wraps wrongly; a NaN
+//! `u·w` is computed in f64, where it is exact for every f32 `u` and every side up to 2²⁹, so
+//! indices and weights are those of the exact formula, rounded once (a weight to f32).
+//! Indices are `i64`, so `u·w` up to the f32 range neither overflows nor wraps wrongly (they
+//! saturate at ±2⁶³; neighbours of a saturated index are formed with saturating adds); a NaN
 //! coordinate floors to index 0 (Rust's saturating float → int cast), documented rather than
 //! undefined.
 
@@ -18,8 +21,8 @@ use crate::sampler::AddressMode;
 #[must_use]
 #[inline]
 pub fn nearest_index(u: f32, size: u32) -> i64 {
-    // The cast saturates at ±2⁶³ and maps NaN to 0.
-    (u * size as f32).floor() as i64
+    // Exact in f64; the cast saturates at ±2⁶³ and maps NaN to 0.
+    (f64::from(u) * f64::from(size)).floor() as i64
 }
 
 /// The two texel indices and the blend weight of linear filtering along one axis, before
@@ -34,18 +37,18 @@ pub struct LinearTaps {
 
 /// The taps of linear filtering at coordinate `u` over `size` texels.
 ///
-/// `u·size − ½` is computed in f32 (exactly, when `size` is a power of two and `u` a multiple of
-/// 2⁻²⁴); a non-finite `u` gives index 0 and weight 0.
+/// `u·size − ½` and its fraction are computed exactly in f64 (sides up to 2²⁹), then the weight
+/// is rounded once to f32. A non-finite `u` gives index 0 and weight 0.
 #[must_use]
 #[inline]
 pub fn linear_taps(u: f32, size: u32) -> LinearTaps {
-    let x = u * size as f32 - 0.5;
+    let x = f64::from(u) * f64::from(size) - 0.5;
     let floor = x.floor();
     let frac = x - floor;
     if frac.is_finite() {
         LinearTaps {
             i0: floor as i64,
-            frac,
+            frac: frac as f32,
         }
     } else {
         LinearTaps { i0: 0, frac: 0.0 }

@@ -59,7 +59,10 @@ pub(crate) fn filter<T: Texel>(
     let mut sum = Vec4::ZERO;
     let mut weight_sum = 0.0;
     let (s0, s1, t0, t1) = (s0 as i64, s1 as i64, t0 as i64, t1 as i64);
-    let texels = (s1 - s0 + 1).saturating_mul(t1 - t0 + 1);
+    let texels = s1
+        .saturating_sub(s0)
+        .saturating_add(1)
+        .saturating_mul(t1.saturating_sub(t0).saturating_add(1));
     if texels > MAX_TEXELS {
         return None;
     }

@@ -26,9 +26,11 @@ pub(crate) fn bilinear<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing)
     let ty = linear_taps(uv.y, h);
     let (x0, y0) = (tx.i0, ty.i0);
     let c00 = fetch(level, x0, y0, a);
-    let c10 = fetch(level, x0 + 1, y0, a);
-    let c01 = fetch(level, x0, y0 + 1, a);
-    let c11 = fetch(level, x0 + 1, y0 + 1, a);
+    // Saturating: a saturated index's neighbour is itself.
+    let (x1, y1) = (x0.saturating_add(1), y0.saturating_add(1));
+    let c10 = fetch(level, x1, y0, a);
+    let c01 = fetch(level, x0, y1, a);
+    let c11 = fetch(level, x1, y1, a);
     let top = c00 + (c10 - c00) * tx.frac;
     let bottom = c01 + (c11 - c01) * tx.frac;
     top + (bottom - top) * ty.frac
@@ -49,10 +51,10 @@ pub(crate) fn bicubic<T: Texel>(
     let wy = kernel.taps(ty.frac);
     let mut sum = Vec4::ZERO;
     for (j, wyj) in wy.iter().enumerate() {
-        let y = ty.i0 - 1 + j as i64;
+        let y = ty.i0.saturating_add(j as i64 - 1);
         let mut row = Vec4::ZERO;
         for (i, wxi) in wx.iter().enumerate() {
-            row += fetch(level, tx.i0 - 1 + i as i64, y, a) * *wxi;
+            row += fetch(level, tx.i0.saturating_add(i as i64 - 1), y, a) * *wxi;
         }
         sum += row * *wyj;
     }

@@ -19,11 +19,14 @@ use crate::{MipChain, Texel, Texture2d};
 /// - a level of detail beyond the chain uses its last level.
 ///
 /// # Accuracy
-/// Texel addressing and weights are computed in f32 exactly as the Vulkan formulas state (see
-/// [`crate::addressing`]); bilinear blends in the form `a + (b − a)·t`, so a texel centre returns
-/// its texel exactly, a constant texture returns the constant exactly, and every result lies within
-/// the range of the texels it blends expanded by 4 ulp (the premultiplied blend plus the
-/// un-premultiplying division). Tested in `tests/sampling.rs`.
+/// Texel indices and weights are those of the Vulkan formulas evaluated exactly (f64), each
+/// weight rounded once to f32 (see [`crate::addressing`]); every `sample_level` result lies in the
+/// set the specification allows at its minimum precisions (dEQP-style check,
+/// `tests/sampling.rs::sample_level_is_inside_the_allowed_set`). Bilinear blends in the form
+/// `a + (b − a)·t`: an exact texel centre returns its texel exactly; a constant texture returns
+/// the constant within 2 ε (un-premultiplying) under nearest, bilinear and trilinear and within
+/// 16 ε under cubic, anisotropic and EWA; nearest, bilinear, trilinear, B-spline, anisotropic and
+/// EWA results lie within the texels' range widened by 4 ε. Tested in `tests/sampling.rs`.
 #[derive(Clone, Debug)]
 pub struct TextureSampler<T> {
     chain: MipChain<T>,
