@@ -149,6 +149,9 @@ pub(crate) trait Source {
     fn size(&self) -> (u32, u32);
     /// The value to filter at `(x, y)` (inside the source).
     fn get(&self, x: u32, y: u32) -> Vec4;
+    /// Row `y` as values to filter: borrowed where the source stores them, else converted into
+    /// `buffer` (which is resized as needed).
+    fn row<'a>(&'a self, y: u32, buffer: &'a mut Vec<Vec4>) -> &'a [Vec4];
 }
 
 /// A texture read as premultiplied linear values (or, sRGB-naive, stored values).
@@ -166,6 +169,21 @@ impl<T: Texel> Source for TexelSource<'_, T> {
     #[inline]
     fn get(&self, x: u32, y: u32) -> Vec4 {
         let texel = self.texture.texels()[y as usize * self.texture.width() as usize + x as usize];
+        self.convert(texel)
+    }
+
+    fn row<'a>(&'a self, y: u32, buffer: &'a mut Vec<Vec4>) -> &'a [Vec4] {
+        buffer.clear();
+        if let Some(row) = self.texture.row(y) {
+            buffer.extend(row.iter().map(|&t| self.convert(t)));
+        }
+        buffer
+    }
+}
+
+impl<T: Texel> TexelSource<'_, T> {
+    #[inline]
+    fn convert(&self, texel: T) -> Vec4 {
         if self.linear {
             premultiply(texel.to_linear())
         } else {

@@ -38,4 +38,10 @@ impl super::Source for Plane {
     fn get(&self, x: u32, y: u32) -> Vec4 {
         self.values[y as usize * self.width as usize + x as usize]
     }
+
+    fn row<'a>(&'a self, y: u32, _buffer: &'a mut Vec<Vec4>) -> &'a [Vec4] {
+        let w = self.width as usize;
+        let start = y as usize * w;
+        self.values.get(start..start + w).unwrap_or(&[])
+    }
 }
