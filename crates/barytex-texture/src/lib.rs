@@ -9,6 +9,7 @@
 //! | storage | [`Texture2d`], [`Limits`], [`TextureError`] |
 //! | colour | [`srgb`]: exact decode table, correctly rounded encode |
 //! | mip chains | [`MipChain`], [`MipChain::generate`] with [`MipOptions`] ([`MipFilter`]: box for any size, Kaiser, Lanczos-3; [`MipColorSpace`]: linear light or sRGB-naive; alpha coverage) |
+//! | loading and saving (feature `image`) | [`load`]: `load_from_memory`, `load_from_path` (limits checked before decoding), `encode_png`, `save_png` |
 //! | the seam | [`Sampler`], [`SamplerDescriptor`] and its enums in [`sampler`] |
 //! | texel addressing (Vulkan) | [`addressing`]: [`wrap`](addressing::wrap), [`linear_taps`](addressing::linear_taps), [`nearest_index`](addressing::nearest_index) |
 //!
@@ -33,6 +34,8 @@
 pub mod addressing;
 mod error;
 mod limits;
+#[cfg(feature = "image")]
+pub mod load;
 pub mod mip_chain;
 pub mod mip_generation;
 pub mod sampler;

@@ -1,0 +1,230 @@
+//! Loading and saving images through the `image` crate (feature `image`), with [`Limits`]
+//! checked against the header **before** any pixel is decoded.
+
+use std::io::Cursor;
+use std::path::Path;
+
+use glam::Vec4;
+use half::f16;
+use image::{DynamicImage, ImageReader};
+
+use crate::{Limits, R8, Rgba8, Rgba16f, Rgba32f, Srgba8, Texel, Texture2d, TextureError, srgb};
+
+/// How to interpret an image's colour values. Images do not reliably say: glTF, for one, fixes
+/// base colour and emissive textures as sRGB and every other texture as linear.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum ColorSpace {
+    /// Colour channels are sRGB-encoded (photographs, albedo/base-colour maps).
+    #[default]
+    Srgb,
+    /// Values are linear data (normal, roughness, height, occlusion maps).
+    Linear,
+}
+
+/// A loaded texture in the format closest to the file's.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum AnyTexture2d {
+    /// 8-bit colour interpreted as sRGB.
+    Srgba8(Texture2d<Srgba8>),
+    /// 8-bit linear colour (with alpha).
+    Rgba8(Texture2d<Rgba8>),
+    /// 8-bit linear single channel (a greyscale data map).
+    R8(Texture2d<R8>),
+    /// 16-bit images, as half floats in linear light.
+    Rgba16f(Texture2d<Rgba16f>),
+    /// Floating-point images.
+    Rgba32f(Texture2d<Rgba32f>),
+}
+
+impl AnyTexture2d {
+    /// `(width, height)`.
+    #[must_use]
+    pub fn size(&self) -> (u32, u32) {
+        match self {
+            Self::Srgba8(t) => t.size(),
+            Self::Rgba8(t) => t.size(),
+            Self::R8(t) => t.size(),
+            Self::Rgba16f(t) => t.size(),
+            Self::Rgba32f(t) => t.size(),
+        }
+    }
+
+    /// The texture in linear-light f32 RGBA.
+    ///
+    /// # Errors
+    /// A failed allocation.
+    pub fn to_rgba32f(&self) -> Result<Texture2d<Rgba32f>, TextureError> {
+        match self {
+            Self::Srgba8(t) => t.to_linear(),
+            Self::Rgba8(t) => t.to_linear(),
+            Self::R8(t) => t.to_linear(),
+            Self::Rgba16f(t) => t.to_linear(),
+            Self::Rgba32f(t) => Ok(t.clone()),
+        }
+    }
+}
+
+/// Decodes a PNG or JPEG held in memory.
+///
+/// The header's dimensions are checked against `limits` (and the decoder is given the same
+/// limits) before pixels are decoded, so a file that claims to be 100000×100000 is refused
+/// without allocating.
+///
+/// # Errors
+/// [`TextureError::TooLarge`] or [`TextureError::Empty`] for refused dimensions,
+/// [`TextureError::Decode`] for an unknown format or a corrupt file.
+pub fn load_from_memory(
+    bytes: &[u8],
+    color_space: ColorSpace,
+    limits: &Limits,
+) -> Result<AnyTexture2d, TextureError> {
+    let reader = || {
+        ImageReader::new(Cursor::new(bytes))
+            .with_guessed_format()
+            .map_err(|e| TextureError::Decode(e.to_string()))
+    };
+    let (width, height) = reader()?
+        .into_dimensions()
+        .map_err(|e| TextureError::Decode(e.to_string()))?;
+    // The largest decoded form is RGBA32F: check that, so every conversion below fits.
+    limits.check(width, height, 16)?;
+    let mut decoder = reader()?;
+    let mut image_limits = image::Limits::default();
+    image_limits.max_image_width = Some(limits.max_width);
+    image_limits.max_image_height = Some(limits.max_height);
+    image_limits.max_alloc = Some(limits.max_bytes);
+    decoder.limits(image_limits);
+    let image = decoder
+        .decode()
+        .map_err(|e| TextureError::Decode(e.to_string()))?;
+    convert(image, color_space)
+}
+
+/// Decodes a PNG or JPEG file; see [`load_from_memory`].
+///
+/// # Errors
+/// As [`load_from_memory`], plus [`TextureError::Decode`] when the file cannot be read.
+pub fn load_from_path(
+    path: impl AsRef<Path>,
+    color_space: ColorSpace,
+    limits: &Limits,
+) -> Result<AnyTexture2d, TextureError> {
+    let path = path.as_ref();
+    let bytes = std::fs::read(path)
+        .map_err(|e| TextureError::Decode(format!("{}: {e}", path.display())))?;
+    load_from_memory(&bytes, color_space, limits)
+}
+
+fn convert(image: DynamicImage, color_space: ColorSpace) -> Result<AnyTexture2d, TextureError> {
+    let (w, h) = (image.width(), image.height());
+    let unlimited = &Limits::UNLIMITED;
+    Ok(match image {
+        DynamicImage::ImageLuma8(gray) if color_space == ColorSpace::Linear => {
+            let texels = gray.into_raw().into_iter().map(R8).collect();
+            AnyTexture2d::R8(Texture2d::from_texels_with_limits(w, h, texels, unlimited)?)
+        }
+        DynamicImage::ImageLuma8(_)
+        | DynamicImage::ImageLumaA8(_)
+        | DynamicImage::ImageRgb8(_)
+        | DynamicImage::ImageRgba8(_) => {
+            let raw = image.into_rgba8().into_raw();
+            match color_space {
+                ColorSpace::Srgb => {
+                    let texels = raw
+                        .chunks_exact(4)
+                        .map(|c| Srgba8([c[0], c[1], c[2], c[3]]))
+                        .collect();
+                    AnyTexture2d::Srgba8(Texture2d::from_texels_with_limits(
+                        w, h, texels, unlimited,
+                    )?)
+                }
+                ColorSpace::Linear => {
+                    let texels = raw
+                        .chunks_exact(4)
+                        .map(|c| Rgba8([c[0], c[1], c[2], c[3]]))
+                        .collect();
+                    AnyTexture2d::Rgba8(Texture2d::from_texels_with_limits(
+                        w, h, texels, unlimited,
+                    )?)
+                }
+            }
+        }
+        DynamicImage::ImageRgb32F(_) | DynamicImage::ImageRgba32F(_) => {
+            // Float images hold linear values whatever the caller says.
+            let raw = image.into_rgba32f().into_raw();
+            let texels = raw
+                .chunks_exact(4)
+                .map(|c| Rgba32f::from_linear(Vec4::new(c[0], c[1], c[2], c[3])))
+                .collect();
+            AnyTexture2d::Rgba32f(Texture2d::from_texels_with_limits(w, h, texels, unlimited)?)
+        }
+        // 16-bit and any other layout: through 16-bit RGBA into half floats.
+        other => {
+            let raw = other.into_rgba16().into_raw();
+            let decode = |v: u16| {
+                let x = f32::from(v) / 65535.0;
+                match color_space {
+                    ColorSpace::Srgb => srgb::to_linear(x),
+                    ColorSpace::Linear => x,
+                }
+            };
+            let texels = raw
+                .chunks_exact(4)
+                .map(|c| {
+                    Rgba16f([
+                        f16::from_f32(decode(c[0])),
+                        f16::from_f32(decode(c[1])),
+                        f16::from_f32(decode(c[2])),
+                        f16::from_f32(f32::from(c[3]) / 65535.0),
+                    ])
+                })
+                .collect();
+            AnyTexture2d::Rgba16f(Texture2d::from_texels_with_limits(w, h, texels, unlimited)?)
+        }
+    })
+}
+
+/// Encodes an 8-bit texture as PNG (sRGB textures are written as they are stored, which is what
+/// PNG viewers expect).
+///
+/// # Errors
+/// [`TextureError::Decode`] if the encoder fails.
+pub fn encode_png<T: Texel + Into<[u8; 4]>>(
+    texture: &Texture2d<T>,
+) -> Result<Vec<u8>, TextureError> {
+    let (w, h) = texture.size();
+    let raw: Vec<u8> = texture.texels().iter().flat_map(|&t| t.into()).collect();
+    let image = image::RgbaImage::from_raw(w, h, raw)
+        .ok_or_else(|| TextureError::Decode("texel buffer does not match its size".into()))?;
+    let mut bytes = Vec::new();
+    image
+        .write_to(&mut Cursor::new(&mut bytes), image::ImageFormat::Png)
+        .map_err(|e| TextureError::Decode(e.to_string()))?;
+    Ok(bytes)
+}
+
+/// Writes an 8-bit texture as a PNG file.
+///
+/// # Errors
+/// [`TextureError::Decode`] if encoding or writing fails.
+pub fn save_png<T: Texel + Into<[u8; 4]>>(
+    texture: &Texture2d<T>,
+    path: impl AsRef<Path>,
+) -> Result<(), TextureError> {
+    let path = path.as_ref();
+    std::fs::write(path, encode_png(texture)?)
+        .map_err(|e| TextureError::Decode(format!("{}: {e}", path.display())))
+}
+
+impl From<Srgba8> for [u8; 4] {
+    fn from(t: Srgba8) -> Self {
+        t.0
+    }
+}
+
+impl From<Rgba8> for [u8; 4] {
+    fn from(t: Rgba8) -> Self {
+        t.0
+    }
+}

@@ -1,0 +1,139 @@
+//! Loading through the `image` crate: round trips, formats, and limits enforced before decoding.
+#![cfg(feature = "image")]
+
+use barytex_texture::load::{AnyTexture2d, ColorSpace, encode_png, load_from_memory};
+use barytex_texture::{Limits, Srgba8, Texture2d, TextureError};
+
+/// CRC-32 (IEEE), for hand-made PNG chunks.
+fn crc32(bytes: &[u8]) -> u32 {
+    let mut crc = 0xFFFF_FFFF_u32;
+    for &b in bytes {
+        crc ^= u32::from(b);
+        for _ in 0..8 {
+            crc = if crc & 1 == 1 {
+                (crc >> 1) ^ 0xEDB8_8320
+            } else {
+                crc >> 1
+            };
+        }
+    }
+    !crc
+}
+
+/// A PNG whose header claims `width × height` RGBA8 and whose data is a few bytes.
+fn lying_png(width: u32, height: u32) -> Vec<u8> {
+    let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
+    let mut chunk = |kind: &[u8], data: &[u8]| {
+        png.extend_from_slice(&(data.len() as u32).to_be_bytes());
+        let mut body = kind.to_vec();
+        body.extend_from_slice(data);
+        png.extend_from_slice(&body);
+        png.extend_from_slice(&crc32(&body).to_be_bytes());
+    };
+    let mut ihdr = Vec::new();
+    ihdr.extend_from_slice(&width.to_be_bytes());
+    ihdr.extend_from_slice(&height.to_be_bytes());
+    ihdr.extend_from_slice(&[8, 6, 0, 0, 0]);
+    chunk(b"IHDR", &ihdr);
+    chunk(b"IDAT", &[0x78, 0x9c, 0x03, 0x00, 0x00, 0x00, 0x00, 0x01]);
+    chunk(b"IEND", &[]);
+    png
+}
+
+#[test]
+fn a_png_claiming_100000_squared_is_refused_before_decoding() {
+    let result = load_from_memory(
+        &lying_png(100_000, 100_000),
+        ColorSpace::Srgb,
+        &Limits::default(),
+    );
+    assert!(
+        matches!(
+            result,
+            Err(TextureError::TooLarge {
+                what: "width",
+                requested: 100_000,
+                ..
+            })
+        ),
+        "{result:?}"
+    );
+    // Within the side limits but over the byte limit.
+    let limits = Limits {
+        max_bytes: 1 << 20,
+        ..Limits::default()
+    };
+    let result = load_from_memory(&lying_png(4000, 4000), ColorSpace::Srgb, &limits);
+    assert!(
+        matches!(result, Err(TextureError::TooLarge { what: "bytes", .. })),
+        "{result:?}"
+    );
+}
+
+#[test]
+fn garbage_is_a_decode_error() {
+    for bytes in [&b""[..], b"not an image", &lying_png(2, 2)[..20]] {
+        let result = load_from_memory(bytes, ColorSpace::Srgb, &Limits::default());
+        assert!(matches!(result, Err(TextureError::Decode(_))), "{result:?}");
+    }
+}
+
+#[test]
+fn png_round_trips_in_both_colour_spaces() {
+    let texture = Texture2d::from_fn(7, 3, |x, y| Srgba8([x as u8 * 30, y as u8 * 80, 7, 200]))
+        .expect("small");
+    let png = encode_png(&texture).expect("encode");
+    match load_from_memory(&png, ColorSpace::Srgb, &Limits::default()).expect("decode") {
+        AnyTexture2d::Srgba8(back) => assert_eq!(back, texture),
+        other => panic!("expected Srgba8, got {other:?}"),
+    }
+    match load_from_memory(&png, ColorSpace::Linear, &Limits::default()).expect("decode") {
+        AnyTexture2d::Rgba8(back) => {
+            assert_eq!(back.texels()[5].0, texture.texels()[5].0);
+        }
+        other => panic!("expected Rgba8, got {other:?}"),
+    }
+}
+
+#[test]
+fn sixteen_bit_pngs_load_as_half_floats() {
+    let image = image::ImageBuffer::<image::Rgba<u16>, _>::from_fn(4, 2, |x, _| {
+        image::Rgba([x as u16 * 20_000, 65_535, 0, 65_535])
+    });
+    let mut png = Vec::new();
+    image
+        .write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+        .expect("encode");
+    let loaded = load_from_memory(&png, ColorSpace::Linear, &Limits::default()).expect("decode");
+    let AnyTexture2d::Rgba16f(t) = loaded else {
+        panic!("expected Rgba16f");
+    };
+    let linear = t.linear(3, 0).expect("inside");
+    assert!((linear.x - 60_000.0 / 65_535.0).abs() < 1e-3, "{linear:?}");
+    assert_eq!(linear.y, 1.0);
+}
+
+#[test]
+fn fixture_textures_load() {
+    let Some(fixtures) = barytex_testkit::fixtures_dir() else {
+        eprintln!("fixtures absent: skipping");
+        return;
+    };
+    let dir = fixtures.join("gltf/TextureCoordinateTest/glTF");
+    let Ok(entries) = std::fs::read_dir(&dir) else {
+        eprintln!("{} absent: skipping", dir.display());
+        return;
+    };
+    let mut loaded = 0;
+    for entry in entries.flatten() {
+        let path = entry.path();
+        if path.extension().is_some_and(|e| e == "png" || e == "jpg") {
+            let t =
+                barytex_texture::load::load_from_path(&path, ColorSpace::Srgb, &Limits::default())
+                    .expect("fixture decodes");
+            assert!(t.size().0 > 0);
+            loaded += 1;
+        }
+    }
+    assert!(loaded > 0, "no image in {}", dir.display());
+}
