@@ -66,6 +66,22 @@ fn environment_regressions() {
 }
 
 #[test]
+fn sampling_regressions() {
+    replay(
+        "sampling",
+        barytex_testkit::fuzz_inputs::sampling::check_sampling,
+    );
+}
+
+#[test]
+fn mip_generation_regressions() {
+    replay(
+        "mip_generation",
+        barytex_testkit::fuzz_inputs::mip_generation::check_mip_generation,
+    );
+}
+
+#[test]
 fn slerp_regressions() {
     replay("slerp", barytex_testkit::fuzz_inputs::slerp::check_slerp);
 }

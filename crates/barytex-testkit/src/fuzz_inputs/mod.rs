@@ -13,7 +13,9 @@
 pub mod environment;
 pub mod hull2d;
 pub mod hull3d;
+pub mod mip_generation;
 pub mod polygon;
+pub mod sampling;
 pub mod slerp;
 pub mod uv_mappings;
 
