@@ -184,8 +184,12 @@ pub fn allowed_sample_level<T: Texel>(
                 }
             }
             MipmapFilterMode::Linear => {
-                for base in (lo.floor() as usize)..=(hi.floor() as usize) {
-                    let (l0, l1) = (base.min(last), (base + 1).min(last));
+                // Levels at or beyond the last one all read the last (and the saturating cast
+                // keeps a huge LOD from overflowing `base + 1`).
+                let first = (lo.floor() as usize).min(last);
+                let end = (hi.floor() as usize).min(last);
+                for base in first..=end {
+                    let (l0, l1) = (base, (base + 1).min(last));
                     let b0 = level_box(&chain.levels()[l0], uv, desc.min_filter, desc);
                     let b1 = level_box(&chain.levels()[l1], uv, desc.min_filter, desc);
                     let (t0, t1) = weight_range(lod.clamp(lo, hi) - base as f64, LOD_PRECISION);

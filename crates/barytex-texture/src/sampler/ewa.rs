@@ -1,7 +1,7 @@
 //! Elliptically weighted averaging (Heckbert 1989; pbrt-v4 `MIPMap::EWA`): every texel inside the
 //! ellipse spanned by the footprint's axes, weighted by a Gaussian of its elliptical distance.
 
-use glam::{Vec2, Vec4};
+use glam::{DVec4, Vec2, Vec4};
 
 use crate::sampler::texel_fetch::{Addressing, fetch};
 use crate::{Texel, Texture2d};
@@ -56,14 +56,17 @@ pub(crate) fn filter<T: Texel>(
     let (s0, s1) = ((st.x - u_half).ceil(), (st.x + u_half).floor());
     let (t0, t1) = ((st.y - v_half).ceil(), (st.y + v_half).floor());
     let edge = (-ALPHA).exp();
-    let mut sum = Vec4::ZERO;
-    let mut weight_sum = 0.0;
+    // Thousands of terms may be summed: accumulate in f64 so the normalised result keeps f32
+    // accuracy (an f32 sum drifted 20 ε on a constant texture; found by the `sampling` fuzz target).
+    let mut sum = DVec4::ZERO;
+    let mut weight_sum = 0.0_f64;
     let (s0, s1, t0, t1) = (s0 as i64, s1 as i64, t0 as i64, t1 as i64);
-    let texels = s1
-        .saturating_sub(s0)
-        .saturating_add(1)
-        .saturating_mul(t1.saturating_sub(t0).saturating_add(1));
-    if texels > MAX_TEXELS {
+    // Either range may be empty (a needle ellipse between texel centres); an empty column range
+    // must not leave the row loop running over a huge row range (found by the `sampling` fuzz
+    // target: 12 s for one lookup), so bound the rows and columns separately too.
+    let columns = s1.saturating_sub(s0).saturating_add(1).max(0);
+    let rows = t1.saturating_sub(t0).saturating_add(1).max(0);
+    if columns > MAX_TEXELS || rows > MAX_TEXELS || columns.saturating_mul(rows) > MAX_TEXELS {
         return None;
     }
     for t in t0..=t1 {
@@ -72,14 +75,14 @@ pub(crate) fn filter<T: Texel>(
             let ss = s as f32 - st.x;
             let r2 = a * ss * ss + b * ss * tt + c * tt * tt;
             if r2 < 1.0 {
-                let weight = (-ALPHA * r2).exp() - edge;
-                sum += fetch(level, s, t, addressing) * weight;
+                let weight = f64::from((-ALPHA * r2).exp() - edge);
+                sum += fetch(level, s, t, addressing).as_dvec4() * weight;
                 weight_sum += weight;
             }
         }
     }
     Some(if weight_sum > 0.0 {
-        sum / weight_sum
+        (sum / weight_sum).as_vec4()
     } else {
         fetch(level, st.x.round() as i64, st.y.round() as i64, addressing)
     })

@@ -44,13 +44,19 @@ pub(crate) fn premultiply(c: Vec4) -> Vec4 {
     Vec4::new(c.x * c.w, c.y * c.w, c.z * c.w, c.w)
 }
 
-/// Premultiplied → straight alpha; alpha ≤ 0 (or NaN) gives transparent black.
+/// Premultiplied → straight alpha; alpha ≤ 0 (or NaN) gives transparent black. Divides rather
+/// than multiplying by `1/α`, whose reciprocal overflows for subnormal alpha (found by the
+/// `sampling` fuzz target); a colour that still overflows is dropped to black.
 #[must_use]
 #[inline]
 pub(crate) fn unpremultiply(c: Vec4) -> Vec4 {
     if c.w > 0.0 {
-        let inv = 1.0 / c.w;
-        Vec4::new(c.x * inv, c.y * inv, c.z * inv, c.w)
+        let rgb = c.truncate() / c.w;
+        if rgb.is_finite() {
+            rgb.extend(c.w)
+        } else {
+            Vec4::new(0.0, 0.0, 0.0, c.w)
+        }
     } else {
         Vec4::ZERO
     }

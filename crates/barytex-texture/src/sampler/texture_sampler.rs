@@ -25,8 +25,10 @@ use crate::{MipChain, Texel, Texture2d};
 /// `tests/sampling.rs::sample_level_is_inside_the_allowed_set`). Bilinear blends in the form
 /// `a + (b − a)·t`: an exact texel centre returns its texel exactly; a constant texture returns
 /// the constant within 2 ε (un-premultiplying) under nearest, bilinear and trilinear and within
-/// 16 ε under cubic, anisotropic and EWA; nearest, bilinear, trilinear, B-spline, anisotropic and
-/// EWA results lie within the texels' range widened by 4 ε. Tested in `tests/sampling.rs`.
+/// 16 ε under cubic, anisotropic and EWA; nearest, bilinear and trilinear results lie within the
+/// texels' range widened by 4 ε, B-spline, anisotropic and EWA results within it widened by 16 ε
+/// (they sum and normalise up to 16 weighted terms). Tested in `tests/sampling.rs` and by the
+/// `sampling` fuzz target.
 #[derive(Clone, Debug)]
 pub struct TextureSampler<T> {
     chain: MipChain<T>,
