@@ -10,6 +10,7 @@
 //! | colour | [`srgb`]: exact decode table, correctly rounded encode |
 //! | mip chains | [`MipChain`], [`MipChain::generate`] with [`MipOptions`] ([`MipFilter`]: box for any size, Kaiser, Lanczos-3; [`MipColorSpace`]: linear light or sRGB-naive; alpha coverage) |
 //! | loading and saving (feature `image`) | [`load`]: `load_from_memory`, `load_from_path` (limits checked before decoding), `encode_png`, `save_png` |
+//! | image remapping | [`remap::remap_bilinear_rgba8`] (OpenCV `remap` INTER_LINEAR with exact weights) |
 //! | the seam | [`Sampler`], [`SamplerDescriptor`] and its enums in [`sampler`] |
 //! | texel addressing (Vulkan) | [`addressing`]: [`wrap`](addressing::wrap), [`linear_taps`](addressing::linear_taps), [`nearest_index`](addressing::nearest_index) |
 //!
@@ -38,6 +39,7 @@ mod limits;
 pub mod load;
 pub mod mip_chain;
 pub mod mip_generation;
+pub mod remap;
 pub mod sampler;
 pub mod srgb;
 mod texel;
