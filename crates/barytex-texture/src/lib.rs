@@ -11,6 +11,8 @@
 //! | mip chains | [`MipChain`], [`MipChain::generate`] with [`MipOptions`] ([`MipFilter`]: box for any size, Kaiser, Lanczos-3; [`MipColorSpace`]: linear light or sRGB-naive; alpha coverage) |
 //! | loading and saving (feature `image`) | [`load`]: `load_from_memory`, `load_from_path` (limits checked before decoding), `encode_png`, `save_png` |
 //! | image remapping | [`remap::remap_bilinear_rgba8`] (OpenCV `remap` INTER_LINEAR with exact weights) |
+//! | procedural textures | [`procedural`]: [`Checkerboard`](procedural::Checkerboard), [`BoxFilteredCheckerboard`](procedural::BoxFilteredCheckerboard) (exact ground truth), [`Stripes`](procedural::Stripes), [`ValueNoise`](procedural::ValueNoise) |
+//! | ground truth | [`reference::SupersampledReference`]: N×N jittered samples over the footprint, N ≤ 32 |
 //! | the seam | [`Sampler`], [`SamplerDescriptor`] and its enums in [`sampler`] |
 //! | texel addressing (Vulkan) | [`addressing`]: [`wrap`](addressing::wrap), [`linear_taps`](addressing::linear_taps), [`nearest_index`](addressing::nearest_index) |
 //!
@@ -39,6 +41,8 @@ mod limits;
 pub mod load;
 pub mod mip_chain;
 pub mod mip_generation;
+pub mod procedural;
+pub mod reference;
 pub mod remap;
 pub mod sampler;
 pub mod srgb;
