@@ -11,6 +11,7 @@
 //! | mip chains | [`MipChain`], [`MipChain::generate`] with [`MipOptions`] ([`MipFilter`]: box for any size, Kaiser, Lanczos-3; [`MipColorSpace`]: linear light or sRGB-naive; alpha coverage) |
 //! | loading and saving (feature `image`) | [`load`]: `load_from_memory`, `load_from_path` (limits checked before decoding), `encode_png`, `save_png` |
 //! | image remapping | [`remap::remap_bilinear_rgba8`] (OpenCV `remap` INTER_LINEAR with exact weights) |
+//! | cube maps | [`CubeTexture`]: sampled by direction, seamless across edges and corners |
 //! | procedural textures | [`procedural`]: [`Checkerboard`](procedural::Checkerboard), [`BoxFilteredCheckerboard`](procedural::BoxFilteredCheckerboard) (exact ground truth), [`Stripes`](procedural::Stripes), [`ValueNoise`](procedural::ValueNoise) |
 //! | ground truth | [`reference::SupersampledReference`]: N×N jittered samples over the footprint, N ≤ 32 |
 //! | the seam | [`Sampler`], [`SamplerDescriptor`] and its enums in [`sampler`] |
@@ -35,6 +36,7 @@
 #![forbid(unsafe_code)]
 
 pub mod addressing;
+mod cube;
 mod error;
 mod limits;
 #[cfg(feature = "image")]
@@ -49,6 +51,7 @@ pub mod srgb;
 mod texel;
 mod texture2d;
 
+pub use cube::CubeTexture;
 pub use error::TextureError;
 pub use limits::Limits;
 pub use mip_chain::MipChain;
