@@ -12,6 +12,7 @@
 //! | loading and saving (feature `image`) | [`load`]: `load_from_memory`, `load_from_path` (limits checked before decoding), `encode_png`, `save_png` |
 //! | image remapping | [`remap::remap_bilinear_rgba8`] (OpenCV `remap` INTER_LINEAR with exact weights) |
 //! | cube maps | [`CubeTexture`]: sampled by direction, seamless across edges and corners |
+//! | arrays and volumes | [`Texture2dArray`] (Vulkan layer selection), [`Texture3d`] (trilinear volumes) |
 //! | procedural textures | [`procedural`]: [`Checkerboard`](procedural::Checkerboard), [`BoxFilteredCheckerboard`](procedural::BoxFilteredCheckerboard) (exact ground truth), [`Stripes`](procedural::Stripes), [`ValueNoise`](procedural::ValueNoise) |
 //! | ground truth | [`reference::SupersampledReference`]: N×N jittered samples over the footprint, N ≤ 32 |
 //! | the seam | [`Sampler`], [`SamplerDescriptor`] and its enums in [`sampler`] |
@@ -50,6 +51,7 @@ pub mod sampler;
 pub mod srgb;
 mod texel;
 mod texture2d;
+mod volume;
 
 pub use cube::CubeTexture;
 pub use error::TextureError;
@@ -59,3 +61,4 @@ pub use mip_generation::{MipColorSpace, MipFilter, MipOptions};
 pub use sampler::{Sampler, SamplerDescriptor, TextureSampler};
 pub use texel::{R8, R32f, Rg8, Rgba8, Rgba16f, Rgba32f, Srgba8, Texel, TextureFormat};
 pub use texture2d::Texture2d;
+pub use volume::{Texture2dArray, Texture3d};
