@@ -65,6 +65,19 @@ fn quick_report_writes_every_family() {
     ] {
         assert!(interp.contains(heading), "missing {heading:?}");
     }
+    let texture = std::fs::read_to_string(dir.join("texture.md")).unwrap();
+    assert!(index.contains("texture.md"), "{index}");
+    for heading in [
+        "## Texture filters",
+        "### checkerboard plane at a grazing angle",
+        "### fine text",
+        "### rotated stripes",
+        "texture-filters-grazing.png",
+    ] {
+        assert!(texture.contains(heading), "missing {heading:?}");
+    }
+    let strip = std::fs::read(dir.join("texture-filters-grazing.png")).unwrap();
+    assert!(strip.starts_with(b"\x89PNG"), "not a PNG");
     // One progress line per family on stderr.
     for family in [
         "2D barycentric",
