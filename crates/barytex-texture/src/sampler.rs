@@ -5,6 +5,7 @@
 //! so every filter can be measured against the same ground truth.
 
 mod anisotropic;
+mod compare;
 mod cubic;
 pub mod descriptor;
 mod ewa;

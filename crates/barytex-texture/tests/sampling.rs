@@ -382,3 +382,58 @@ fn anisotropic_filters_resolve_the_minor_axis() {
         "EWA {ewa:?} vs trilinear {tri:?}"
     );
 }
+
+/// Comparison samplers (shadow maps): each texel compared with the reference, then filtered;
+/// bilinear is 2×2 percentage-closer filtering.
+#[test]
+fn comparison_sampling_filters_the_comparisons() {
+    use barytex_texture::R32f;
+    use barytex_texture::sampler::CompareFunction;
+    // Depths 0.2 | 0.8 side by side.
+    let depth = Texture2d::from_texels(2, 1, vec![R32f(0.2), R32f(0.8)]).expect("2×1");
+    let desc = |filter, op| SamplerDescriptor {
+        mag_filter: filter,
+        min_filter: filter,
+        compare: Some(op),
+        ..SamplerDescriptor::default()
+    };
+    let at = |filter, op, u: f32, reference: f32| {
+        TextureSampler::single_level(depth.clone(), desc(filter, op))
+            .sample_compare_level(Vec2::new(u, 0.5), reference, 0.0)
+            .expect("a comparison sampler")
+    };
+    // Nearest: one texel decides.
+    assert_eq!(
+        at(FilterMode::Nearest, CompareFunction::Less, 0.25, 0.5),
+        0.0
+    );
+    assert_eq!(
+        at(FilterMode::Nearest, CompareFunction::Less, 0.75, 0.5),
+        1.0
+    );
+    // Bilinear halfway: half the taps pass.
+    assert_eq!(at(FilterMode::Linear, CompareFunction::Less, 0.5, 0.5), 0.5);
+    assert_eq!(
+        at(FilterMode::Linear, CompareFunction::Always, 0.5, 0.5),
+        1.0
+    );
+    assert_eq!(
+        at(FilterMode::Linear, CompareFunction::Never, 0.5, 0.5),
+        0.0
+    );
+    assert_eq!(
+        at(FilterMode::Linear, CompareFunction::GreaterEqual, 0.5, 0.1),
+        0.0
+    );
+    // A sampler without a comparison function answers None; NaN input gives 0.
+    let plain = TextureSampler::single_level(depth.clone(), SamplerDescriptor::bilinear());
+    assert_eq!(plain.sample_compare_level(Vec2::splat(0.5), 0.5, 0.0), None);
+    assert_eq!(
+        at(FilterMode::Linear, CompareFunction::Always, f32::NAN, 0.5),
+        0.0
+    );
+    assert_eq!(
+        at(FilterMode::Linear, CompareFunction::Always, 0.5, f32::NAN),
+        0.0
+    );
+}

@@ -120,7 +120,9 @@ pub struct SamplerDescriptor {
     pub lod_min_clamp: f32,
     /// Largest level of detail used.
     pub lod_max_clamp: f32,
-    /// Depth comparison (comparison samplers), `None` for colour sampling.
+    /// Depth comparison (comparison samplers, used by
+    /// [`TextureSampler::sample_compare_level`](crate::TextureSampler::sample_compare_level)),
+    /// `None` for colour sampling.
     pub compare: Option<CompareFunction>,
     /// Largest anisotropy ratio, 1 to 16; 1 turns anisotropic filtering off.
     pub anisotropy_clamp: u16,

@@ -5,8 +5,8 @@ use glam::{Vec2, Vec4};
 
 use crate::sampler::texel_fetch::{Addressing, unpremultiply};
 use crate::sampler::{
-    AnisotropicFilter, FilterMode, MipmapFilterMode, Sampler, SamplerDescriptor, anisotropic, ewa,
-    level_filters, lod,
+    AnisotropicFilter, FilterMode, MipmapFilterMode, Sampler, SamplerDescriptor, anisotropic,
+    compare, ewa, level_filters, lod,
 };
 use crate::{MipChain, Texel, Texture2d};
 
@@ -143,29 +143,61 @@ impl<T: Texel> TextureSampler<T> {
 
     /// Mag/min/mip filtering at a (biased, clamped) level of detail; premultiplied result.
     fn filter_premultiplied(&self, uv: Vec2, lod: f32) -> Vec4 {
+        self.across_levels(lod, |level, filter| self.filter_level(level, uv, filter))
+    }
+
+    /// Vulkan's level selection and blending at a (biased, clamped) LOD around an in-level
+    /// filter `filter_level(level, filter)`.
+    fn across_levels(&self, lod: f32, filter_level: impl Fn(usize, FilterMode) -> Vec4) -> Vec4 {
         let d = &self.descriptor;
         if lod <= 0.0 {
-            return self.filter_level(0, uv, d.mag_filter);
+            return filter_level(0, d.mag_filter);
         }
         let last = self.chain.len() - 1;
         match d.mipmap_filter {
             MipmapFilterMode::Nearest => {
                 // Vulkan: d = ⌈λ + ½⌉ − 1, clamped to the chain.
                 let level = ((lod + 0.5).ceil() - 1.0).max(0.0);
-                self.filter_level(to_level(level, last), uv, d.min_filter)
+                filter_level(to_level(level, last), d.min_filter)
             }
             MipmapFilterMode::Linear => {
                 let floor = lod.floor();
                 let lo = to_level(floor, last);
                 let hi = to_level(floor + 1.0, last);
-                let a = self.filter_level(lo, uv, d.min_filter);
+                let a = filter_level(lo, d.min_filter);
                 if hi == lo {
                     return a;
                 }
-                let b = self.filter_level(hi, uv, d.min_filter);
+                let b = filter_level(hi, d.min_filter);
                 a + (b - a) * (lod - floor)
             }
         }
+    }
+
+    /// A depth-comparison (shadow-map) lookup at an explicit LOD: each texel's first channel `d`
+    /// passes when `compare(reference, d)` holds (wgpu/Vulkan order: `Less` passes when the
+    /// reference is less than the stored depth); the 0/1 results are filtered with the
+    /// descriptor's filters (bilinear = 2×2 percentage-closer filtering) and mip selection. Texels
+    /// outside under `ClampToBorder` compare the border colour's first channel. `None` when the
+    /// descriptor has no comparison function; a non-finite `uv` or NaN reference gives 0.
+    #[must_use]
+    pub fn sample_compare_level(&self, uv: Vec2, reference: f32, lod: f32) -> Option<f32> {
+        let compare = self.descriptor.compare?;
+        if !uv.is_finite() || reference.is_nan() {
+            return Some(0.0);
+        }
+        let lod = self.clamp_lod(lod);
+        let result = self.across_levels(lod, |level, filter| {
+            let texture = &self.chain.levels()[level];
+            Vec4::splat(compare::filter_level(
+                texture,
+                uv,
+                filter,
+                &self.addressing,
+                |depth| compare::passes(compare, reference, depth),
+            ))
+        });
+        Some(result.x)
     }
 
     fn filter_level(&self, level: usize, uv: Vec2, filter: FilterMode) -> Vec4 {
