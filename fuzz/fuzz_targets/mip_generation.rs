@@ -4,7 +4,9 @@
 //! violated invariant and the input as a Rust block.
 #![no_main]
 
-use barytex_testkit::fuzz_inputs::mip_generation::{MIP_LEN, check_mip_generation, mip_generation_code};
+use barytex_testkit::fuzz_inputs::mip_generation::{
+    MIP_LEN, check_mip_generation, mip_generation_code,
+};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
