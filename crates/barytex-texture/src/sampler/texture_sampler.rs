@@ -12,6 +12,21 @@ use crate::{MipChain, Texel, Texture2d};
 
 /// A texture (its mip chain) with the sampler state that filters it.
 ///
+/// ```
+/// use barytex_texture::{MipChain, MipOptions, Sampler, SamplerDescriptor, Srgba8, Texture2d, TextureSampler};
+/// use glam::Vec2;
+///
+/// // A 64² black-and-white checker of 1-texel squares, with its linear-light mip chain.
+/// let base = Texture2d::from_fn(64, 64, |x, y| Srgba8(if (x + y) % 2 == 0 { [0, 0, 0, 255] } else { [255; 4] }))?;
+/// let chain = MipChain::generate(base, &MipOptions::default())?;
+/// let sampler = TextureSampler::new(chain, SamplerDescriptor::trilinear());
+/// // A pixel covering 4×4 texels reads level 2: the linear-light mean grey 0.5 (stored as the
+/// // sRGB byte 188, which decodes to 0.503).
+/// let c = sampler.sample(Vec2::splat(0.5), Vec2::new(4.0 / 64.0, 0.0), Vec2::new(0.0, 4.0 / 64.0));
+/// assert!((c.x - 0.5).abs() < 0.004);
+/// # Ok::<(), barytex_texture::TextureError>(())
+/// ```
+///
 /// # Documented values for bad input
 /// - a non-finite `uv` gives transparent black `(0, 0, 0, 0)`;
 /// - a zero footprint magnifies (level 0, `mag_filter`); a NaN or infinite derivative is treated
