@@ -1,4 +1,29 @@
-//! A reference software rasterizer: exact where GPUs are exact (fixed-point edge functions, the
-//! top-left fill rule), correct where the peers are not (near-plane clipping, derivatives),
-//! deterministic for any thread count.
+//! A reference software rasterizer: exact where GPUs are exact (fixed-point edge functions with
+//! 8 sub-pixel bits, the top-left fill rule), correct where the peers are not (homogeneous
+//! near-plane clipping, perspective-correct varyings with exact derivatives), deterministic for
+//! any thread count (tiles own their pixels and draw in submission order).
+//!
+//! | concept | items |
+//! |---|---|
+//! | the seam | [`Shader`], [`Fragment`] |
+//! | the draw call | [`draw`], [`DrawStats`] |
+//! | state | [`PipelineState`], [`CullMode`], [`FrontFace`], [`Viewport`], [`Scissor`], [`Blend`], [`Interpolation`] |
+//! | targets | [`Framebuffer`] |
+//!
+//! Conventions: clip space is Vulkan's/wgpu's (`−w ≤ x, y ≤ w`, `0 ≤ z ≤ w`, y up); screen
+//! space is y down with pixel centres at `(x + ½, y + ½)`; counter-clockwise (in clip space) is
+//! front by default.
 #![forbid(unsafe_code)]
+
+mod clip;
+mod draw;
+mod edge;
+mod shader;
+mod state;
+mod target;
+
+pub use draw::{DrawStats, TILE, draw};
+pub use edge::{MAX_COORDINATE, SUBPIXEL_BITS};
+pub use shader::{Fragment, Shader};
+pub use state::{Blend, CullMode, FrontFace, Interpolation, PipelineState, Scissor, Viewport};
+pub use target::Framebuffer;

@@ -1,0 +1,150 @@
+//! Triangle setup and coverage in fixed point: 8 sub-pixel bits, 64-bit edge functions, the
+//! top-left fill rule, samples at pixel centres.
+//!
+//! Screen coordinates are y-down. A triangle is set up with its vertices ordered so that every
+//! edge function is positive inside; an edge function `E(p) = A·pₓ + B·p_y + C` is exactly zero on
+//! its edge, and a pixel centre with `E = 0` is covered only for a **top** edge (horizontal, the
+//! triangle below it) or a **left** edge (the triangle to its right) — so pixels on an edge shared
+//! by two triangles are covered exactly once (watertight), as D3D and Vulkan specify.
+
+use glam::{DVec2, Vec2};
+
+/// Sub-pixel precision: 8 bits (1/256 pixel), as GPUs use.
+pub const SUBPIXEL_BITS: u32 = 8;
+const ONE: i64 = 1 << SUBPIXEL_BITS;
+const HALF: i64 = ONE / 2;
+
+/// The largest |screen coordinate| in pixels the setup accepts (the clipper's guard band keeps
+/// vertices inside): 2²², so products of fixed-point differences stay below 2⁶².
+pub const MAX_COORDINATE: f32 = 4_194_304.0;
+
+/// A triangle ready to rasterize.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct EdgeSetup {
+    /// `E_i = a·x + b·y + c` in fixed point, edge `i` opposite vertex `order[i]`.
+    a: [i64; 3],
+    b: [i64; 3],
+    c: [i64; 3],
+    /// 0 for top-left edges, 1 otherwise (`E − bias ≥ 0` is covered).
+    bias: [i64; 3],
+    /// Twice the area in fixed-point units (> 0).
+    area2: i64,
+    /// Which input vertex each internal vertex is (the input order, or two swapped).
+    pub(crate) order: [usize; 3],
+    /// Pixel bounding box `[x0, x1) × [y0, y1)` (not clipped to any target).
+    pub(crate) bbox: [i64; 4],
+}
+
+/// Rounds a screen coordinate to fixed point.
+fn fixed(v: f32) -> i64 {
+    (f64::from(v) * ONE as f64).round() as i64
+}
+
+impl EdgeSetup {
+    /// `None` for a zero-area triangle (after snapping) or coordinates beyond
+    /// [`MAX_COORDINATE`].
+    pub(crate) fn new(screen: [Vec2; 3]) -> Option<Self> {
+        if screen
+            .iter()
+            .any(|p| !p.is_finite() || p.abs().max_element() > MAX_COORDINATE)
+        {
+            return None;
+        }
+        let mut order = [0, 1, 2];
+        let mut v = screen.map(|p| (fixed(p.x), fixed(p.y)));
+        let cross = |v: &[(i64, i64); 3]| {
+            (v[1].0 - v[0].0) * (v[2].1 - v[0].1) - (v[1].1 - v[0].1) * (v[2].0 - v[0].0)
+        };
+        let mut area2 = cross(&v);
+        if area2 == 0 {
+            return None;
+        }
+        if area2 < 0 {
+            v.swap(1, 2);
+            order.swap(1, 2);
+            area2 = -area2;
+        }
+        let mut a = [0; 3];
+        let mut b = [0; 3];
+        let mut c = [0; 3];
+        let mut bias = [0; 3];
+        for i in 0..3 {
+            let (p, q) = (v[(i + 1) % 3], v[(i + 2) % 3]);
+            let (dx, dy) = (q.0 - p.0, q.1 - p.1);
+            // E(r) = dx·(r.y − p.y) − dy·(r.x − p.x): positive on the inside for this winding.
+            a[i] = -dy;
+            b[i] = dx;
+            c[i] = dy * p.0 - dx * p.1;
+            let top_left = (dy == 0 && dx > 0) || dy < 0;
+            bias[i] = i64::from(!top_left);
+        }
+        let xs = v.map(|p| p.0);
+        let ys = v.map(|p| p.1);
+        let min = |s: [i64; 3]| s.iter().copied().min().unwrap_or(0);
+        let max = |s: [i64; 3]| s.iter().copied().max().unwrap_or(0);
+        // Pixels whose centre (x·256 + 128) can be inside.
+        let first = |lo: i64| (lo - HALF).div_euclid(ONE);
+        let last = |hi: i64| (hi - HALF).div_euclid(ONE) + 1;
+        Some(Self {
+            a,
+            b,
+            c,
+            bias,
+            area2,
+            order,
+            bbox: [first(min(xs)), first(min(ys)), last(max(xs)), last(max(ys))],
+        })
+    }
+
+    /// The three edge values at the centre of pixel `(x, y)`.
+    #[inline]
+    fn edges_at(&self, x: i64, y: i64) -> [i64; 3] {
+        let (px, py) = (x * ONE + HALF, y * ONE + HALF);
+        core::array::from_fn(|i| self.a[i] * px + self.b[i] * py + self.c[i])
+    }
+
+    /// Calls `covered(x, y, λ)` for every pixel of `rect` (`[x0, x1) × [y0, y1)`) whose centre
+    /// the triangle covers, row by row, with the screen-space barycentrics `λ` of the centre over
+    /// the **input** vertex order.
+    pub(crate) fn for_each_covered(
+        &self,
+        rect: [i64; 4],
+        mut covered: impl FnMut(i64, i64, [f64; 3]),
+    ) {
+        let x0 = self.bbox[0].max(rect[0]);
+        let y0 = self.bbox[1].max(rect[1]);
+        let x1 = self.bbox[2].min(rect[2]);
+        let y1 = self.bbox[3].min(rect[3]);
+        if x0 >= x1 || y0 >= y1 {
+            return;
+        }
+        let inv_area = 1.0 / self.area2 as f64;
+        let step = self.a.map(|a| a * ONE);
+        for y in y0..y1 {
+            let mut e = self.edges_at(x0, y);
+            for x in x0..x1 {
+                if (0..3).all(|i| e[i] - self.bias[i] >= 0) {
+                    // Edge i is opposite internal vertex i: its value is that vertex's weight.
+                    let mut lambda = [0.0; 3];
+                    for i in 0..3 {
+                        lambda[self.order[i]] = e[i] as f64 * inv_area;
+                    }
+                    covered(x, y, lambda);
+                }
+                for i in 0..3 {
+                    e[i] += step[i];
+                }
+            }
+        }
+    }
+
+    /// The change of the barycentrics (input order) per pixel right and per pixel down.
+    pub(crate) fn gradients(&self) -> (DVec2, DVec2, DVec2) {
+        let s = ONE as f64 / self.area2 as f64;
+        let mut g = [DVec2::ZERO; 3];
+        for i in 0..3 {
+            g[self.order[i]] = DVec2::new(self.a[i] as f64 * s, self.b[i] as f64 * s);
+        }
+        (g[0], g[1], g[2])
+    }
+}

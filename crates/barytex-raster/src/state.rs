@@ -1,0 +1,129 @@
+//! Fixed-function state of a draw: culling, winding, viewport, scissor, depth, blending,
+//! interpolation and derivative modes.
+
+use barytex_texture::sampler::CompareFunction;
+
+/// Which faces are discarded.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum CullMode {
+    /// Draw both faces.
+    None,
+    /// Discard back faces (the default).
+    #[default]
+    Back,
+    /// Discard front faces.
+    Front,
+}
+
+/// Which winding (in a y-up frame, as in clip space) is the front.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum FrontFace {
+    /// Counter-clockwise is front (glTF, OpenGL, wgpu's default).
+    #[default]
+    Ccw,
+    /// Clockwise is front.
+    Cw,
+}
+
+/// How varyings are interpolated across a triangle.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Interpolation {
+    /// Perspective-correct (the default): the varying is affine on the triangle in 3D.
+    #[default]
+    Perspective,
+    /// Affine in screen space: the seed's artefact under perspective, kept for comparison.
+    Affine,
+}
+
+/// How colours are written.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Blend {
+    /// The fragment replaces the pixel.
+    #[default]
+    Replace,
+    /// Porter–Duff "over" on premultiplied colour: `dst = src + dst·(1 − src.a)`.
+    Over,
+}
+
+/// The screen rectangle that normalized device coordinates map onto, and the depth range.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Viewport {
+    /// Left edge in pixels.
+    pub x: f32,
+    /// Top edge in pixels.
+    pub y: f32,
+    /// Width in pixels.
+    pub width: f32,
+    /// Height in pixels.
+    pub height: f32,
+    /// Depth of NDC z = 0.
+    pub min_depth: f32,
+    /// Depth of NDC z = 1.
+    pub max_depth: f32,
+}
+
+impl Viewport {
+    /// The whole target, depth [0, 1].
+    #[must_use]
+    pub fn full(width: u32, height: u32) -> Self {
+        Self {
+            x: 0.0,
+            y: 0.0,
+            width: width as f32,
+            height: height as f32,
+            min_depth: 0.0,
+            max_depth: 1.0,
+        }
+    }
+}
+
+/// A pixel rectangle `[x0, x1) × [y0, y1)` outside which nothing is written.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Scissor {
+    /// Left (inclusive).
+    pub x0: u32,
+    /// Top (inclusive).
+    pub y0: u32,
+    /// Right (exclusive).
+    pub x1: u32,
+    /// Bottom (exclusive).
+    pub y1: u32,
+}
+
+/// Everything but the shader and the geometry.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PipelineState {
+    /// Face culling.
+    pub cull: CullMode,
+    /// Front winding.
+    pub front_face: FrontFace,
+    /// `None`: the whole target.
+    pub viewport: Option<Viewport>,
+    /// `None`: no scissor.
+    pub scissor: Option<Scissor>,
+    /// Depth test (`None`: off); a fragment passes when `compare(fragment, stored)` holds.
+    pub depth_compare: Option<CompareFunction>,
+    /// Whether passing fragments write their depth.
+    pub depth_write: bool,
+    /// Colour blending.
+    pub blend: Blend,
+    /// Varying interpolation.
+    pub interpolation: Interpolation,
+}
+
+impl Default for PipelineState {
+    /// Back-face culling, counter-clockwise front, the whole target, depth test `Less` with
+    /// writes, replace, perspective-correct.
+    fn default() -> Self {
+        Self {
+            cull: CullMode::Back,
+            front_face: FrontFace::Ccw,
+            viewport: None,
+            scissor: None,
+            depth_compare: Some(CompareFunction::Less),
+            depth_write: true,
+            blend: Blend::Replace,
+            interpolation: Interpolation::Perspective,
+        }
+    }
+}
