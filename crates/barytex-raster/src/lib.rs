@@ -9,6 +9,7 @@
 //! | the draw call | [`draw`], [`DrawStats`] |
 //! | state | [`PipelineState`], [`CullMode`], [`FrontFace`], [`Viewport`], [`Scissor`], [`Blend`], [`Interpolation`] |
 //! | targets | [`Framebuffer`] |
+//! | the seed's scanline backend | [`scanline::scanline_fill`]: Edge Table and Active Edge List, exact with rational arithmetic |
 //!
 //! Conventions: clip space is Vulkan's/wgpu's (`−w ≤ x, y ≤ w`, `0 ≤ z ≤ w`, y up); screen
 //! space is y down with pixel centres at `(x + ½, y + ½)`; counter-clockwise (in clip space) is
@@ -18,6 +19,7 @@
 mod clip;
 mod draw;
 mod edge;
+pub mod scanline;
 mod shader;
 mod state;
 mod target;
