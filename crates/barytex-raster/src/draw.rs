@@ -5,12 +5,13 @@
 
 use barytex_interp::Interpolate;
 use barytex_texture::sampler::CompareFunction;
-use glam::{DVec2, UVec2, Vec2, Vec3, Vec4};
+use glam::{UVec2, Vec2, Vec3, Vec4};
 use rayon::prelude::*;
 
 use crate::clip::{ClipVertex, clip, inside};
 use crate::edge::EdgeSetup;
-use crate::state::{Blend, CullMode, FrontFace, Interpolation, PipelineState, Viewport};
+use crate::shader::PieceContext;
+use crate::state::{Blend, CullMode, FrontFace, PipelineState, Viewport};
 use crate::target::{Framebuffer, premultiply};
 use crate::{Fragment, Shader};
 
@@ -61,12 +62,10 @@ struct TileResult {
 /// One screen-space piece of an input triangle.
 struct Piece<V> {
     edge: EdgeSetup,
-    /// Per piece vertex: 1/w, depth, barycentrics over the input triangle.
-    inv_w: [f64; 3],
+    /// Depth at the piece's vertices.
     depth: [f64; 3],
-    bary: [Vec3; 3],
-    varyings: [V; 3],
     front: bool,
+    context: PieceContext<V>,
 }
 
 fn depth_passes(op: CompareFunction, fragment: f32, stored: f32) -> bool {
@@ -169,13 +168,19 @@ pub fn draw<S: Shader>(
                 continue;
             };
             drawn = true;
+            let (g0, g1, g2) = edge.gradients();
+            let bary = ids.map(|i| polygon[i].bary);
             pieces.push(Piece {
                 edge,
-                inv_w: s.map(|v| v.2),
                 depth: s.map(|v| v.1),
-                bary: ids.map(|i| polygon[i].bary),
-                varyings,
                 front,
+                context: PieceContext {
+                    varyings,
+                    grads: [g0, g1, g2],
+                    inv_w: s.map(|v| v.2),
+                    bary: (bary != [Vec3::X, Vec3::Y, Vec3::Z]).then_some(bary),
+                    interpolation: state.interpolation,
+                },
             });
         }
         if !drawn {
@@ -300,8 +305,7 @@ fn shade_piece<S: Shader>(
     depth: &mut [f32],
     stats: &mut DrawStats,
 ) {
-    let (g0, g1, g2) = piece.edge.gradients();
-    let grads = [g0, g1, g2];
+    let context = &piece.context;
     piece.edge.for_each_covered(t, |x, y, lambda| {
         let index = (y - t[1]) as usize * tw + (x - t[0]) as usize;
         let z = (0..3).map(|i| lambda[i] * piece.depth[i]).sum::<f64>() as f32;
@@ -311,25 +315,14 @@ fn shade_piece<S: Shader>(
             stats.fragments_depth_failed += 1;
             return;
         }
-        // Weights over the piece's vertices and their screen derivatives.
-        let (weights, dx, dy) = match state.interpolation {
-            Interpolation::Affine => (lambda, grads.map(|g| g.x), grads.map(|g| g.y)),
-            Interpolation::Perspective => perspective(lambda, &grads, piece.inv_w),
-        };
-        // Over the input triangle's vertices.
-        let to_input = |w: [f64; 3]| {
-            let v = (0..3).fold(glam::DVec3::ZERO, |acc, i| {
-                acc + piece.bary[i].as_dvec3() * w[i]
-            });
-            [v.x as f32, v.y as f32, v.z as f32]
-        };
+        let weights = context.input_weights(context.weights(lambda));
         let fragment = Fragment {
-            varying: S::Varying::combine3(piece.varyings, to_input(weights)),
-            ddx: S::Varying::combine3(piece.varyings, to_input(dx)),
-            ddy: S::Varying::combine3(piece.varyings, to_input(dy)),
+            varying: S::Varying::combine3(context.varyings, weights),
             depth: z,
             pixel: UVec2::new(x as u32, y as u32),
             front_facing: piece.front,
+            lambda,
+            piece: context,
         };
         stats.fragments_shaded += 1;
         let Some(c) = shader.fragment(&fragment) else {
@@ -345,24 +338,4 @@ fn shade_piece<S: Shader>(
             depth[index] = z;
         }
     });
-}
-
-/// Perspective-correct weights `qᵢ/Σq` with `qᵢ = λᵢ/wᵢ`, and their exact screen derivatives
-/// `(q′ᵢ·D − qᵢ·D′)/D²` (zero-sum weights).
-fn perspective(
-    lambda: [f64; 3],
-    grads: &[DVec2; 3],
-    inv_w: [f64; 3],
-) -> ([f64; 3], [f64; 3], [f64; 3]) {
-    let q: [f64; 3] = core::array::from_fn(|i| lambda[i] * inv_w[i]);
-    let d: f64 = q.iter().sum();
-    let qx: [f64; 3] = core::array::from_fn(|i| grads[i].x * inv_w[i]);
-    let qy: [f64; 3] = core::array::from_fn(|i| grads[i].y * inv_w[i]);
-    let (dx, dy): (f64, f64) = (qx.iter().sum(), qy.iter().sum());
-    let d2 = d * d;
-    (
-        core::array::from_fn(|i| q[i] / d),
-        core::array::from_fn(|i| (qx[i] * d - q[i] * dx) / d2),
-        core::array::from_fn(|i| (qy[i] * d - q[i] * dy) / d2),
-    )
 }

@@ -1,7 +1,9 @@
 //! The `Shader` seam: vertex → clip position + varying; fragment → colour or discard.
 
 use barytex_interp::Interpolate;
-use glam::{UVec2, Vec4};
+use glam::{DVec2, UVec2, Vec3, Vec4};
+
+use crate::state::Interpolation;
 
 /// A programmable pipeline stage pair. Uniforms live in the implementing type.
 ///
@@ -18,7 +20,7 @@ use glam::{UVec2, Vec4};
 ///     fn vertex(&self, v: &Vec3) -> (Vec4, f32) {
 ///         (v.extend(1.0), 0.0)
 ///     }
-///     fn fragment(&self, _: &Fragment<f32>) -> Option<Vec4> {
+///     fn fragment(&self, _: &Fragment<'_, f32>) -> Option<Vec4> {
 ///         Some(self.0)
 ///     }
 /// }
@@ -34,22 +36,95 @@ pub trait Shader: Sync {
     fn vertex(&self, vertex: &Self::Vertex) -> (Vec4, Self::Varying);
 
     /// The linear-light, straight-alpha colour of a fragment, or `None` to discard it.
-    fn fragment(&self, fragment: &Fragment<Self::Varying>) -> Option<Vec4>;
+    fn fragment(&self, fragment: &Fragment<'_, Self::Varying>) -> Option<Vec4>;
 }
 
-/// What the fragment stage sees at one pixel.
+/// What the fragment stage sees at one pixel. The varying is interpolated eagerly; its screen
+/// derivatives [`ddx`](Self::ddx) and [`ddy`](Self::ddy) only when asked for (most shaders never
+/// read them, and they cost two more interpolations).
 #[derive(Clone, Copy, Debug)]
-pub struct Fragment<V> {
+pub struct Fragment<'a, V> {
     /// The varying at the pixel centre (perspective-correct unless the state says affine).
     pub varying: V,
-    /// Its change per pixel to the right (exact derivative of the interpolation at the centre).
-    pub ddx: V,
-    /// Its change per pixel down.
-    pub ddy: V,
     /// Depth in the viewport's depth range.
     pub depth: f32,
     /// The pixel, (0, 0) at the top-left.
     pub pixel: UVec2,
     /// Whether the triangle faces the viewer (after the pipeline's `front_face`).
     pub front_facing: bool,
+    pub(crate) lambda: [f64; 3],
+    pub(crate) piece: &'a PieceContext<V>,
+}
+
+/// What the derivatives of a fragment need from its triangle piece.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PieceContext<V> {
+    /// The input triangle's varyings.
+    pub(crate) varyings: [V; 3],
+    /// Screen gradients of the piece's barycentrics.
+    pub(crate) grads: [DVec2; 3],
+    /// 1/w at the piece's vertices.
+    pub(crate) inv_w: [f64; 3],
+    /// The piece's vertices as barycentrics of the input triangle (`None`: the identity).
+    pub(crate) bary: Option<[Vec3; 3]>,
+    pub(crate) interpolation: Interpolation,
+}
+
+impl<V: Copy> PieceContext<V> {
+    /// Weights over the input vertices for the piece weights `w`.
+    #[inline]
+    pub(crate) fn input_weights(&self, w: [f64; 3]) -> [f32; 3] {
+        match &self.bary {
+            None => w.map(|x| x as f32),
+            Some(bary) => {
+                let v = (0..3).fold(glam::DVec3::ZERO, |acc, i| acc + bary[i].as_dvec3() * w[i]);
+                [v.x as f32, v.y as f32, v.z as f32]
+            }
+        }
+    }
+
+    /// Interpolation weights over the piece's vertices at screen barycentrics `lambda`.
+    #[inline]
+    pub(crate) fn weights(&self, lambda: [f64; 3]) -> [f64; 3] {
+        match self.interpolation {
+            Interpolation::Affine => lambda,
+            Interpolation::Perspective => {
+                let q: [f64; 3] = core::array::from_fn(|i| lambda[i] * self.inv_w[i]);
+                let inv_d = 1.0 / (q[0] + q[1] + q[2]);
+                q.map(|x| x * inv_d)
+            }
+        }
+    }
+
+    /// The weights' derivatives along `axis` (0 = x, 1 = y): zero-sum weights.
+    fn derivative_weights(&self, lambda: [f64; 3], axis: usize) -> [f64; 3] {
+        let g: [f64; 3] = core::array::from_fn(|i| self.grads[i][axis]);
+        match self.interpolation {
+            Interpolation::Affine => g,
+            Interpolation::Perspective => {
+                // (q′ᵢ·D − qᵢ·D′)/D² with qᵢ = λᵢ/wᵢ, D = Σq.
+                let q: [f64; 3] = core::array::from_fn(|i| lambda[i] * self.inv_w[i]);
+                let qd: [f64; 3] = core::array::from_fn(|i| g[i] * self.inv_w[i]);
+                let (d, dd) = (q.iter().sum::<f64>(), qd.iter().sum::<f64>());
+                core::array::from_fn(|i| (qd[i] * d - q[i] * dd) / (d * d))
+            }
+        }
+    }
+}
+
+impl<V: Interpolate> Fragment<'_, V> {
+    /// The varying's change per pixel to the right: the exact derivative of the interpolation
+    /// at the pixel centre (analytic, not a 2×2-quad difference).
+    #[must_use]
+    pub fn ddx(&self) -> V {
+        let w = self.piece.derivative_weights(self.lambda, 0);
+        V::combine3(self.piece.varyings, self.piece.input_weights(w))
+    }
+
+    /// The varying's change per pixel down.
+    #[must_use]
+    pub fn ddy(&self) -> V {
+        let w = self.piece.derivative_weights(self.lambda, 1);
+        V::combine3(self.piece.varyings, self.piece.input_weights(w))
+    }
 }

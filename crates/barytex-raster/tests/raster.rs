@@ -31,7 +31,7 @@ impl Shader for Counter {
     fn vertex(&self, v: &Vec4) -> (Vec4, f32) {
         (*v, 0.0)
     }
-    fn fragment(&self, f: &Fragment<f32>) -> Option<Vec4> {
+    fn fragment(&self, f: &Fragment<'_, f32>) -> Option<Vec4> {
         self.counts[(f.pixel.y * self.width + f.pixel.x) as usize].fetch_add(1, Ordering::Relaxed);
         Some(Vec4::ONE)
     }
@@ -178,8 +178,8 @@ impl Shader for PlaneUv {
     fn vertex(&self, v: &(Vec3, Vec2)) -> (Vec4, Vec2) {
         (self.view_projection * v.0.extend(1.0), v.1)
     }
-    fn fragment(&self, f: &Fragment<Vec2>) -> Option<Vec4> {
-        Some(Vec4::new(f.varying.x, f.varying.y, f.ddx.x, f.ddy.y))
+    fn fragment(&self, f: &Fragment<'_, Vec2>) -> Option<Vec4> {
+        Some(Vec4::new(f.varying.x, f.varying.y, f.ddx().x, f.ddy().y))
     }
 }
 

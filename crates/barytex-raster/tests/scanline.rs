@@ -117,7 +117,7 @@ impl Shader for Counter {
     fn vertex(&self, v: &Vec4) -> (Vec4, f32) {
         (*v, 0.0)
     }
-    fn fragment(&self, f: &Fragment<f32>) -> Option<Vec4> {
+    fn fragment(&self, f: &Fragment<'_, f32>) -> Option<Vec4> {
         self.counts[(f.pixel.y * self.width + f.pixel.x) as usize].fetch_add(1, Ordering::Relaxed);
         Some(Vec4::ONE)
     }
