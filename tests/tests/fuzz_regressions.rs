@@ -66,6 +66,14 @@ fn environment_regressions() {
 }
 
 #[test]
+fn raster_soup_regressions() {
+    replay(
+        "raster_soup",
+        barytex_testkit::fuzz_inputs::raster_soup::check_raster_soup,
+    );
+}
+
+#[test]
 fn sampling_regressions() {
     replay(
         "sampling",

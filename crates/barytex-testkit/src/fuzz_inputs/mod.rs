@@ -15,6 +15,7 @@ pub mod hull2d;
 pub mod hull3d;
 pub mod mip_generation;
 pub mod polygon;
+pub mod raster_soup;
 pub mod sampling;
 pub mod slerp;
 pub mod uv_mappings;
