@@ -13,8 +13,8 @@ use std::time::Instant;
 use barytex_texture::reference::{PixelFilter, SupersampledReference};
 use barytex_texture::sampler::{AnisotropicFilter, CubicKernel, FilterMode, MipmapFilterMode};
 use barytex_texture::{
-    MipChain, MipOptions, Rgba8, Sampler, SamplerDescriptor, Srgba8, Texel, Texture2d,
-    TextureSampler, load::encode_png, sampler::AddressMode,
+    MipChain, MipColorSpace, MipOptions, Rgba8, Sampler, SamplerDescriptor, Srgba8, Texel,
+    Texture2d, TextureSampler, load::encode_png, sampler::AddressMode,
 };
 use glam::{DVec2, Vec2, Vec4};
 
@@ -299,6 +299,27 @@ pub(crate) fn run(
             });
             images.push(image);
         }
+        // The same trilinear filter over an sRGB-naive chain (levels averaged as stored bytes):
+        // the colour-space error the linear-light chain avoids.
+        let naive_chain = MipChain::generate(
+            scene.texture.clone(),
+            &MipOptions {
+                color_space: MipColorSpace::SrgbNaive,
+                ..MipOptions::default()
+            },
+        )
+        .expect("256² chain");
+        let trilinear = filters()[0].2;
+        let naive = TextureSampler::new(naive_chain, trilinear);
+        let (errs, psnr) = errors(&render(&naive, &scene.lookups), &truth);
+        psnrs.push(format!("trilinear over an sRGB-naive chain {psnr:.1} dB"));
+        rows.push(Row {
+            method: "trilinear, sRGB-naive mip chain".to_owned(),
+            is_default: false,
+            ns: time_per_sample(&naive, &scene.lookups, batches),
+            abs: ErrorStats::of(errs),
+            ..Row::default()
+        });
         if scene_index == 0
             && let Some(png) = strip(scene.width, scene.height, &images)
         {
