@@ -21,7 +21,8 @@ pub const MAX_COORDINATE: f32 = 4_194_304.0;
 /// A triangle ready to rasterize.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct EdgeSetup {
-    /// `E_i = a·x + b·y + c` in fixed point, edge `i` opposite vertex `order[i]`.
+    /// `E_j = a·x + b·y + c` in fixed point, edge `j` opposite **input** vertex `j` (stored in
+    /// input order, so `E_j / area2` is vertex `j`'s barycentric with no permutation per pixel).
     a: [i64; 3],
     b: [i64; 3],
     c: [i64; 3],
@@ -29,8 +30,6 @@ pub(crate) struct EdgeSetup {
     bias: [i64; 3],
     /// Twice the area in fixed-point units (> 0).
     area2: i64,
-    /// Which input vertex each internal vertex is (the input order, or two swapped).
-    pub(crate) order: [usize; 3],
     /// Pixel bounding box `[x0, x1) × [y0, y1)` (not clipped to any target).
     pub(crate) bbox: [i64; 4],
 }
@@ -72,11 +71,13 @@ impl EdgeSetup {
             let (p, q) = (v[(i + 1) % 3], v[(i + 2) % 3]);
             let (dx, dy) = (q.0 - p.0, q.1 - p.1);
             // E(r) = dx·(r.y − p.y) − dy·(r.x − p.x): positive on the inside for this winding.
-            a[i] = -dy;
-            b[i] = dx;
-            c[i] = dy * p.0 - dx * p.1;
             let top_left = (dy == 0 && dx > 0) || dy < 0;
-            bias[i] = i64::from(!top_left);
+            // Stored under the input vertex this edge is opposite.
+            let j = order[i];
+            a[j] = -dy;
+            b[j] = dx;
+            c[j] = dy * p.0 - dx * p.1;
+            bias[j] = i64::from(!top_left);
         }
         let xs = v.map(|p| p.0);
         let ys = v.map(|p| p.1);
@@ -91,7 +92,6 @@ impl EdgeSetup {
             c,
             bias,
             area2,
-            order,
             bbox: [first(min(xs)), first(min(ys)), last(max(xs)), last(max(ys))],
         })
     }
@@ -123,13 +123,9 @@ impl EdgeSetup {
         for y in y0..y1 {
             let mut e = self.edges_at(x0, y);
             for x in x0..x1 {
-                if (0..3).all(|i| e[i] - self.bias[i] >= 0) {
-                    // Edge i is opposite internal vertex i: its value is that vertex's weight.
-                    let mut lambda = [0.0; 3];
-                    for i in 0..3 {
-                        lambda[self.order[i]] = e[i] as f64 * inv_area;
-                    }
-                    covered(x, y, lambda);
+                if (e[0] - self.bias[0]) | (e[1] - self.bias[1]) | (e[2] - self.bias[2]) >= 0 {
+                    // Edge j is opposite input vertex j: its value is that vertex's weight.
+                    covered(x, y, e.map(|v| v as f64 * inv_area));
                 }
                 for i in 0..3 {
                     e[i] += step[i];
@@ -141,10 +137,7 @@ impl EdgeSetup {
     /// The change of the barycentrics (input order) per pixel right and per pixel down.
     pub(crate) fn gradients(&self) -> (DVec2, DVec2, DVec2) {
         let s = ONE as f64 / self.area2 as f64;
-        let mut g = [DVec2::ZERO; 3];
-        for i in 0..3 {
-            g[self.order[i]] = DVec2::new(self.a[i] as f64 * s, self.b[i] as f64 * s);
-        }
-        (g[0], g[1], g[2])
+        let g = |j: usize| DVec2::new(self.a[j] as f64 * s, self.b[j] as f64 * s);
+        (g(0), g(1), g(2))
     }
 }
