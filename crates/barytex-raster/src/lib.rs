@@ -9,6 +9,7 @@
 //! | the draw call | [`draw`], [`DrawStats`] |
 //! | state | [`PipelineState`], [`CullMode`], [`FrontFace`], [`Viewport`], [`Scissor`], [`Blend`], [`Interpolation`] |
 //! | targets | [`Framebuffer`] |
+//! | anti-aliasing | [`render_supersampled`] with a [`SamplePattern`] (regular grid or stratified jitter) |
 //! | the seed's scanline backend | [`scanline::scanline_fill`]: Edge Table and Active Edge List, exact with rational arithmetic |
 //!
 //! Conventions: clip space is Vulkan's/wgpu's (`−w ≤ x, y ≤ w`, `0 ≤ z ≤ w`, y up); screen
@@ -22,10 +23,12 @@ mod edge;
 pub mod scanline;
 mod shader;
 mod state;
+mod supersample;
 mod target;
 
 pub use draw::{DrawStats, TILE, draw};
 pub use edge::{MAX_COORDINATE, SUBPIXEL_BITS};
 pub use shader::{Fragment, Shader};
 pub use state::{Blend, CullMode, FrontFace, Interpolation, PipelineState, Scissor, Viewport};
+pub use supersample::{SamplePattern, render_supersampled};
 pub use target::Framebuffer;
