@@ -17,9 +17,9 @@ use std::time::Duration;
 use barytex_raster::{CullMode, Fragment, Framebuffer, PipelineState, Shader, draw};
 use barytex_texture::Limits;
 use criterion::{Criterion, criterion_group, criterion_main};
+use euc::Pipeline;
 use euc::buffer::Buffer2d;
 use euc::rasterizer::{BackfaceCullingDisabled, Triangles};
-use euc::{Pipeline, rasterizer};
 use glam::{Mat4, Vec2, Vec3, Vec4};
 
 const SIZE: u32 = 1024;
@@ -211,7 +211,6 @@ fn render_euc(scene: &Scene, texture: &[u32], lit: bool) -> Buffer2d<u32> {
         &mut color,
         Some(&mut depth),
     );
-    let _ = rasterizer::BackfaceCullingEnabled;
     color
 }
 

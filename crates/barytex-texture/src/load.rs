@@ -216,15 +216,3 @@ pub fn save_png<T: Texel + Into<[u8; 4]>>(
     std::fs::write(path, encode_png(texture)?)
         .map_err(|e| TextureError::Decode(format!("{}: {e}", path.display())))
 }
-
-impl From<Srgba8> for [u8; 4] {
-    fn from(t: Srgba8) -> Self {
-        t.0
-    }
-}
-
-impl From<Rgba8> for [u8; 4] {
-    fn from(t: Rgba8) -> Self {
-        t.0
-    }
-}

@@ -14,7 +14,7 @@ use crate::sampler::texel_fetch::{premultiply, unpremultiply};
 use crate::texture2d::try_vec_with_capacity;
 use crate::{Limits, MipChain, Texel, Texture2d, TextureError};
 
-pub use plane::Plane;
+use plane::Plane;
 
 /// The reduction filter from one level to the next.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

@@ -85,10 +85,22 @@ pub trait Texel: Copy + Default + Send + Sync + core::fmt::Debug + 'static {
 #[repr(transparent)]
 pub struct Srgba8(pub [u8; 4]);
 
+impl From<Srgba8> for [u8; 4] {
+    fn from(t: Srgba8) -> Self {
+        t.0
+    }
+}
+
 /// `Rgba8Unorm`: linear bytes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 #[repr(transparent)]
 pub struct Rgba8(pub [u8; 4]);
+
+impl From<Rgba8> for [u8; 4] {
+    fn from(t: Rgba8) -> Self {
+        t.0
+    }
+}
 
 /// `R8Unorm`: one linear byte.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

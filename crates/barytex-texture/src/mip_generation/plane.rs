@@ -8,13 +8,13 @@ use crate::texture2d::try_vec_with_capacity;
 /// A `width × height` grid of f32 RGBA values (premultiplied linear, or stored values on the
 /// naive path), row-major.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Plane {
+pub(crate) struct Plane {
     /// Width.
-    pub width: u32,
+    pub(crate) width: u32,
     /// Height.
-    pub height: u32,
+    pub(crate) height: u32,
     /// Row-major values.
-    pub values: Vec<Vec4>,
+    pub(crate) values: Vec<Vec4>,
 }
 
 impl Plane {
