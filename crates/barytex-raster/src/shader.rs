@@ -127,4 +127,36 @@ impl<V: Interpolate> Fragment<'_, V> {
         let w = self.piece.derivative_weights(self.lambda, 1);
         V::combine3(self.piece.varyings, self.piece.input_weights(w))
     }
+
+    /// GPU-style x derivative: the difference with the other pixel of this pixel's 2×2 quad in
+    /// the same row (its varying extrapolated from the triangle, as a helper invocation would
+    /// compute it), `right − left`. Less accurate than [`ddx`](Self::ddx): it is the derivative
+    /// half a pixel away, so on perspective-foreshortened surfaces it is off by the varying's
+    /// second derivative; offered to compare with GPUs.
+    #[must_use]
+    pub fn ddx_quad(&self) -> V {
+        self.quad_difference(0, self.pixel.x)
+    }
+
+    /// GPU-style y derivative within the 2×2 quad, `bottom − top`.
+    #[must_use]
+    pub fn ddy_quad(&self) -> V {
+        self.quad_difference(1, self.pixel.y)
+    }
+
+    fn quad_difference(&self, axis: usize, coordinate: u32) -> V {
+        // Even pixels pair with the next one, odd pixels with the previous one.
+        let step = if coordinate.is_multiple_of(2) {
+            1.0
+        } else {
+            -1.0
+        };
+        let partner: [f64; 3] =
+            core::array::from_fn(|i| self.lambda[i] + self.piece.grads[i][axis] * step);
+        let here = self.piece.weights(self.lambda);
+        let there = self.piece.weights(partner);
+        // (there − here)·step: zero-sum weights, one interpolation.
+        let w: [f64; 3] = core::array::from_fn(|i| (there[i] - here[i]) * step);
+        V::combine3(self.piece.varyings, self.piece.input_weights(w))
+    }
 }

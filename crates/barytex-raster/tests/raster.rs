@@ -276,6 +276,69 @@ fn perspective_correct_varyings_and_derivatives_are_exact() {
     assert!(worst_d < 2e-2, "worst relative derivative error {worst_d}");
 }
 
+/// GPU-style quad differences are close to the analytic derivative but less accurate against the
+/// exact one (they measure it half a pixel away).
+struct QuadVsAnalytic {
+    view_projection: Mat4,
+}
+
+impl Shader for QuadVsAnalytic {
+    type Vertex = (Vec3, Vec2);
+    type Varying = Vec2;
+    fn vertex(&self, v: &(Vec3, Vec2)) -> (Vec4, Vec2) {
+        (self.view_projection * v.0.extend(1.0), v.1)
+    }
+    fn fragment(&self, f: &Fragment<'_, Vec2>) -> Option<Vec4> {
+        Some(Vec4::new(f.ddy().y, f.ddy_quad().y, 0.0, 1.0))
+    }
+}
+
+#[test]
+fn quad_derivatives_are_close_but_less_exact_than_analytic() {
+    let (w, h) = (96_u32, 64_u32);
+    let fov = 60_f32.to_radians();
+    let shader = QuadVsAnalytic {
+        view_projection: perspective(fov, w as f32 / h as f32, 0.1, 100.0),
+    };
+    let (vertices, indices) = ground_plane();
+    let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &Limits::default()).expect("small");
+    let state = PipelineState {
+        cull: CullMode::None,
+        ..PipelineState::default()
+    };
+    draw(&mut fb, &shader, &state, &vertices, &indices);
+    let (mut analytic_err, mut quad_err, mut n) = (0.0_f64, 0.0_f64, 0);
+    for y in 0..h {
+        for x in 0..w {
+            let (cx, cy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
+            let (Some(uv), Some(down), Some(c)) = (
+                exact_uv(cx, cy, f64::from(w), f64::from(h), f64::from(fov)),
+                exact_uv(cx, cy + 1e-3, f64::from(w), f64::from(h), f64::from(fov)),
+                fb.pixel(x, y),
+            ) else {
+                continue;
+            };
+            if c.w == 0.0 || c.x == 0.0 {
+                continue;
+            }
+            let exact = (down.1 - uv.1) / 1e-3;
+            analytic_err += (f64::from(c.x) - exact).abs() / exact.abs();
+            quad_err += (f64::from(c.y) - exact).abs() / exact.abs();
+            n += 1;
+        }
+    }
+    assert!(n > 1000, "{n}");
+    let (analytic_err, quad_err) = (analytic_err / f64::from(n), quad_err / f64::from(n));
+    println!(
+        "mean relative error of ∂v/∂y over {n} pixels: analytic {analytic_err:.2e}, quad {quad_err:.2e}"
+    );
+    assert!(quad_err < 0.2, "quad differences far off: {quad_err}");
+    assert!(
+        analytic_err < quad_err / 4.0,
+        "analytic {analytic_err} vs quad {quad_err}"
+    );
+}
+
 /// Affine interpolation shows the seed's artefact: on the same plane its uv error is orders of
 /// magnitude larger.
 #[test]
