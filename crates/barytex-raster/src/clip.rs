@@ -10,7 +10,7 @@ use glam::{Vec3, Vec4};
 pub(crate) const GUARD: f32 = 64.0;
 
 /// A clipped vertex: clip position and barycentrics over the input triangle.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct ClipVertex {
     pub(crate) position: Vec4,
     pub(crate) bary: Vec3,
@@ -34,37 +34,48 @@ pub(crate) fn inside(tri: &[Vec4; 3]) -> bool {
         .all(|&p| planes(p).iter().all(|&d| d >= 0.0) && p.w > 0.0)
 }
 
-/// Clips the triangle to the planes; the result is a convex polygon (possibly empty) in the
-/// triangle's winding. `w > 0` holds for every output vertex (it follows from `z ≥ 0`,
-/// `z ≤ w` together; a vertex with `w = 0` is on both, so it is kept only if `z = w = 0`,
-/// which the caller drops as degenerate).
-pub(crate) fn clip(tri: &[Vec4; 3]) -> Vec<ClipVertex> {
-    let mut poly: Vec<ClipVertex> = tri
-        .iter()
-        .zip([Vec3::X, Vec3::Y, Vec3::Z])
-        .map(|(&position, bary)| ClipVertex { position, bary })
-        .collect();
+/// The most vertices a clipped triangle can have: each of the six planes adds at most one.
+pub(crate) const MAX_CLIPPED: usize = 9;
+
+/// Clips the triangle to the planes into `out` and returns the vertex count; the result is a
+/// convex polygon (possibly empty) in the triangle's winding. `w > 0` holds for every output
+/// vertex (it follows from `z ≥ 0`, `z ≤ w` together; a vertex with `w = 0` is on both, so it
+/// is kept only if `z = w = 0`, which the caller drops as degenerate). No allocation: this runs
+/// once per triangle that crosses a plane.
+pub(crate) fn clip(tri: &[Vec4; 3], out: &mut [ClipVertex; MAX_CLIPPED]) -> usize {
+    let mut poly = [ClipVertex::default(); MAX_CLIPPED];
+    for (slot, (&position, bary)) in
+        poly.iter_mut()
+            .zip(tri.iter().zip([Vec3::X, Vec3::Y, Vec3::Z]))
+    {
+        *slot = ClipVertex { position, bary };
+    }
+    let mut len = 3;
     for plane in 0..6 {
-        if poly.is_empty() {
+        if len == 0 {
             break;
         }
-        let mut out = Vec::with_capacity(poly.len() + 1);
-        for i in 0..poly.len() {
+        let mut n = 0;
+        for i in 0..len {
             let a = poly[i];
-            let b = poly[(i + 1) % poly.len()];
+            let b = poly[(i + 1) % len];
             let (da, db) = (planes(a.position)[plane], planes(b.position)[plane]);
-            if da >= 0.0 {
-                out.push(a);
+            if da >= 0.0 && n < MAX_CLIPPED {
+                out[n] = a;
+                n += 1;
             }
-            if (da >= 0.0) != (db >= 0.0) {
+            if (da >= 0.0) != (db >= 0.0) && n < MAX_CLIPPED {
                 let t = da / (da - db);
-                out.push(ClipVertex {
+                out[n] = ClipVertex {
                     position: a.position + (b.position - a.position) * t,
                     bary: a.bary + (b.bary - a.bary) * t,
-                });
+                };
+                n += 1;
             }
         }
-        poly = out;
+        poly = *out;
+        len = n;
     }
-    poly
+    *out = poly;
+    len
 }

@@ -13,6 +13,8 @@ use glam::{DVec2, Vec2};
 pub const SUBPIXEL_BITS: u32 = 8;
 const ONE: i64 = 1 << SUBPIXEL_BITS;
 const HALF: i64 = ONE / 2;
+/// Side of the blocks that are accepted or rejected whole.
+const BLOCK: i64 = 8;
 
 /// The largest |screen coordinate| in pixels the setup accepts (the clipper's guard band keeps
 /// vertices inside): 2²², so products of fixed-point differences stay below 2⁶².
@@ -96,20 +98,21 @@ impl EdgeSetup {
         })
     }
 
-    /// The three edge values at the centre of pixel `(x, y)`.
+    /// Calls `visit(x, y, e, all_covered)` for every pixel of `rect` (`[x0, x1) × [y0, y1)`)
+    /// that may hold a covered sample, row by row within 8×8 blocks, where `e` are the three
+    /// edge values at the pixel's reference point `(x, y)·256 + reference` and `all_covered`
+    /// says the whole block is inside (no test needed).
+    ///
+    /// Samples lie at offsets within `[extent.0, extent.1]` (in 1/256 pixel) of a pixel's
+    /// corner on both axes: blocks whose sample region lies outside an edge are skipped whole
+    /// (an edge function is linear, so its extremes over the region are at the corners).
     #[inline]
-    fn edges_at(&self, x: i64, y: i64) -> [i64; 3] {
-        let (px, py) = (x * ONE + HALF, y * ONE + HALF);
-        core::array::from_fn(|i| self.a[i] * px + self.b[i] * py + self.c[i])
-    }
-
-    /// Calls `covered(x, y, λ)` for every pixel of `rect` (`[x0, x1) × [y0, y1)`) whose centre
-    /// the triangle covers, row by row, with the screen-space barycentrics `λ` of the centre over
-    /// the **input** vertex order.
-    pub(crate) fn for_each_covered(
+    pub(crate) fn for_each_block_pixel(
         &self,
         rect: [i64; 4],
-        mut covered: impl FnMut(i64, i64, [f64; 3]),
+        extent: (i64, i64),
+        reference: (i64, i64),
+        mut visit: impl FnMut(i64, i64, [i64; 3], bool),
     ) {
         let x0 = self.bbox[0].max(rect[0]);
         let y0 = self.bbox[1].max(rect[1]);
@@ -118,20 +121,76 @@ impl EdgeSetup {
         if x0 >= x1 || y0 >= y1 {
             return;
         }
-        let inv_area = 1.0 / self.area2 as f64;
         let step = self.a.map(|a| a * ONE);
-        for y in y0..y1 {
-            let mut e = self.edges_at(x0, y);
-            for x in x0..x1 {
-                if (e[0] - self.bias[0]) | (e[1] - self.bias[1]) | (e[2] - self.bias[2]) >= 0 {
-                    // Edge j is opposite input vertex j: its value is that vertex's weight.
-                    covered(x, y, e.map(|v| v as f64 * inv_area));
-                }
+        let mut by = y0.div_euclid(BLOCK) * BLOCK;
+        while by < y1 {
+            let (ys, ye) = (by.max(y0), (by + BLOCK).min(y1));
+            let mut bx = x0.div_euclid(BLOCK) * BLOCK;
+            'block: while bx < x1 {
+                let (xs, xe) = (bx.max(x0), (bx + BLOCK).min(x1));
+                bx += BLOCK;
+                let (lx, hx) = (xs * ONE + extent.0, (xe - 1) * ONE + extent.1);
+                let (ly, hy) = (ys * ONE + extent.0, (ye - 1) * ONE + extent.1);
+                let mut accept = true;
                 for i in 0..3 {
-                    e[i] += step[i];
+                    let corner = self.a[i] * lx + self.b[i] * ly + self.c[i];
+                    let (dx, dy) = (self.a[i] * (hx - lx), self.b[i] * (hy - ly));
+                    if corner + dx.max(0) + dy.max(0) < self.bias[i] {
+                        continue 'block;
+                    }
+                    accept &= corner + dx.min(0) + dy.min(0) >= self.bias[i];
+                }
+                for y in ys..ye {
+                    let (px, py) = (xs * ONE + reference.0, y * ONE + reference.1);
+                    let mut e: [i64; 3] =
+                        core::array::from_fn(|i| self.a[i] * px + self.b[i] * py + self.c[i]);
+                    for x in xs..xe {
+                        visit(x, y, e, accept);
+                        for i in 0..3 {
+                            e[i] += step[i];
+                        }
+                    }
                 }
             }
+            by += BLOCK;
         }
+    }
+
+    /// Whether edge values `e` (at one sample) are inside under the top-left rule.
+    #[inline]
+    pub(crate) fn covers(&self, e: [i64; 3]) -> bool {
+        (e[0] - self.bias[0]) | (e[1] - self.bias[1]) | (e[2] - self.bias[2]) >= 0
+    }
+
+    /// The change of the edge values for a move of `(dx, dy)` in 1/256 pixel.
+    #[inline]
+    pub(crate) fn offset(&self, dx: i64, dy: i64) -> [i64; 3] {
+        core::array::from_fn(|i| self.a[i] * dx + self.b[i] * dy)
+    }
+
+    /// Barycentrics (input order) from edge values.
+    #[inline]
+    pub(crate) fn lambda(&self, e: [i64; 3]) -> [f64; 3] {
+        let inv_area = 1.0 / self.area2 as f64;
+        e.map(|v| v as f64 * inv_area)
+    }
+
+    /// Calls `covered(x, y, λ)` for every pixel of `rect` (`[x0, x1) × [y0, y1)`) whose centre
+    /// the triangle covers, row by row within blocks, with the screen-space barycentrics `λ` of
+    /// the centre over the **input** vertex order.
+    #[inline]
+    pub(crate) fn for_each_covered(
+        &self,
+        rect: [i64; 4],
+        mut covered: impl FnMut(i64, i64, [f64; 3]),
+    ) {
+        let inv_area = 1.0 / self.area2 as f64;
+        self.for_each_block_pixel(rect, (HALF, HALF), (HALF, HALF), |x, y, e, all| {
+            if all || self.covers(e) {
+                // Edge j is opposite input vertex j: its value is that vertex's weight.
+                covered(x, y, e.map(|v| v as f64 * inv_area));
+            }
+        });
     }
 
     /// The change of the barycentrics (input order) per pixel right and per pixel down.

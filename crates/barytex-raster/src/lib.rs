@@ -8,8 +8,8 @@
 //! | the seam | [`Shader`], [`Fragment`] |
 //! | the draw call | [`draw`], [`DrawStats`] |
 //! | state | [`PipelineState`], [`CullMode`], [`FrontFace`], [`Viewport`], [`Scissor`], [`Blend`], [`Interpolation`] |
-//! | targets | [`Framebuffer`] |
-//! | anti-aliasing | [`render_supersampled`] with a [`SamplePattern`] (regular grid or stratified jitter) |
+//! | targets | [`Framebuffer`] (one or more samples per pixel, tile-major storage) |
+//! | anti-aliasing | multisampled targets ([`Framebuffer::multisampled`] with a [`SamplePattern`]: regular, per-pixel jitter, the GPUs' standard positions) shaded per pixel (MSAA) or per sample; [`render_supersampled`] by accumulating passes |
 //! | the seed's scanline backend | [`scanline::scanline_fill`]: Edge Table and Active Edge List, exact with rational arithmetic |
 //!
 //! Conventions: clip space is Vulkan's/wgpu's (`−w ≤ x, y ≤ w`, `0 ≤ z ≤ w`, y up); screen
@@ -17,18 +17,22 @@
 //! front by default.
 #![forbid(unsafe_code)]
 
+mod assemble;
 mod clip;
 mod draw;
 mod edge;
+mod samples;
 pub mod scanline;
 mod shader;
 mod state;
 mod supersample;
 mod target;
+mod tile;
 
-pub use draw::{DrawStats, TILE, draw};
+pub use draw::{DrawStats, draw};
 pub use edge::{MAX_COORDINATE, SUBPIXEL_BITS};
+pub use samples::{MAX_SAMPLES, SamplePattern};
 pub use shader::{Fragment, Shader};
 pub use state::{Blend, CullMode, FrontFace, Interpolation, PipelineState, Scissor, Viewport};
-pub use supersample::{SamplePattern, render_supersampled};
-pub use target::Framebuffer;
+pub use supersample::render_supersampled;
+pub use target::{Framebuffer, TILE};

@@ -52,6 +52,9 @@ pub struct Fragment<'a, V> {
     pub pixel: UVec2,
     /// Whether the triangle faces the viewer (after the pipeline's `front_face`).
     pub front_facing: bool,
+    /// The samples of the pixel the triangle covers, bit `k` for sample `k` (`1` in a
+    /// single-sampled target; with per-sample shading, only the sample being shaded).
+    pub coverage: u32,
     pub(crate) lambda: [f64; 3],
     pub(crate) piece: &'a PieceContext<V>,
 }
@@ -83,12 +86,13 @@ impl<V: Copy> PieceContext<V> {
         }
     }
 
-    /// Interpolation weights over the piece's vertices at screen barycentrics `lambda`.
+    /// Interpolation weights over the piece's vertices at screen barycentrics `lambda`
+    /// (perspective-correct for affine spans: these are the span ends and the derivatives).
     #[inline]
     pub(crate) fn weights(&self, lambda: [f64; 3]) -> [f64; 3] {
         match self.interpolation {
             Interpolation::Affine => lambda,
-            Interpolation::Perspective => {
+            Interpolation::Perspective | Interpolation::AffineSpans { .. } => {
                 let q: [f64; 3] = core::array::from_fn(|i| lambda[i] * self.inv_w[i]);
                 let inv_d = 1.0 / (q[0] + q[1] + q[2]);
                 q.map(|x| x * inv_d)
@@ -101,7 +105,7 @@ impl<V: Copy> PieceContext<V> {
         let g: [f64; 3] = core::array::from_fn(|i| self.grads[i][axis]);
         match self.interpolation {
             Interpolation::Affine => g,
-            Interpolation::Perspective => {
+            Interpolation::Perspective | Interpolation::AffineSpans { .. } => {
                 // (q′ᵢ·D − qᵢ·D′)/D² with qᵢ = λᵢ/wᵢ, D = Σq.
                 let q: [f64; 3] = core::array::from_fn(|i| lambda[i] * self.inv_w[i]);
                 let qd: [f64; 3] = core::array::from_fn(|i| g[i] * self.inv_w[i]);

@@ -33,6 +33,14 @@ pub enum Interpolation {
     Perspective,
     /// Affine in screen space: the seed's artefact under perspective, kept for comparison.
     Affine,
+    /// Perspective-correct at the ends of `span`-pixel runs of a row (aligned to multiples of
+    /// `span`), affine in between: one division per span instead of one per pixel, with an
+    /// error that grows with the span and the foreshortening (measured in the report). The
+    /// derivatives stay exact. `span` is clamped to 2..=256.
+    AffineSpans {
+        /// Pixels per span (8, 16 and 32 are the classic choices).
+        span: u32,
+    },
 }
 
 /// How colours are written.
@@ -109,11 +117,16 @@ pub struct PipelineState {
     pub blend: Blend,
     /// Varying interpolation.
     pub interpolation: Interpolation,
+    /// In a multisampled target: `false` shades once per pixel and writes the colour to every
+    /// covered sample (MSAA: edges anti-aliased, shading not); `true` shades every covered
+    /// sample on its own (supersampling: everything anti-aliased, at the cost of a shading per
+    /// sample). Ignored with one sample per pixel.
+    pub sample_shading: bool,
 }
 
 impl Default for PipelineState {
     /// Back-face culling, counter-clockwise front, the whole target, depth test `Less` with
-    /// writes, replace, perspective-correct.
+    /// writes, replace, perspective-correct, shading once per pixel.
     fn default() -> Self {
         Self {
             cull: CullMode::Back,
@@ -124,6 +137,7 @@ impl Default for PipelineState {
             depth_write: true,
             blend: Blend::Replace,
             interpolation: Interpolation::Perspective,
+            sample_shading: false,
         }
     }
 }

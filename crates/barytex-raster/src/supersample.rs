@@ -6,62 +6,8 @@
 use barytex_texture::{Limits, TextureError};
 use glam::{Vec2, Vec4};
 
+use crate::samples::SamplePattern;
 use crate::target::Framebuffer;
-
-/// Where the samples of a pixel lie.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum SamplePattern {
-    /// The centres of an `n × n` grid of sub-pixel cells.
-    Regular {
-        /// Cells per side (1 is the pixel centre: no anti-aliasing).
-        n: u32,
-    },
-    /// One random position in each cell of an `n × n` grid (stratified jitter), the same for
-    /// every pixel of a pass; `seed` makes it repeatable.
-    Jittered {
-        /// Cells per side.
-        n: u32,
-        /// Selects the positions.
-        seed: u64,
-    },
-}
-
-impl SamplePattern {
-    /// The sample offsets from the pixel's top-left corner, each in `[0, 1)²`.
-    #[must_use]
-    pub fn offsets(self) -> Vec<Vec2> {
-        let (n, seed) = match self {
-            Self::Regular { n } => (n.max(1), None),
-            Self::Jittered { n, seed } => (n.max(1), Some(seed)),
-        };
-        let cell = 1.0 / n as f32;
-        let mut out = Vec::with_capacity((n * n) as usize);
-        for j in 0..n {
-            for i in 0..n {
-                let (u, v) = match seed {
-                    None => (0.5, 0.5),
-                    Some(seed) => (
-                        hash01(seed, u64::from(j * n + i), 0),
-                        hash01(seed, u64::from(j * n + i), 1),
-                    ),
-                };
-                out.push(Vec2::new((i as f32 + u) * cell, (j as f32 + v) * cell));
-            }
-        }
-        out
-    }
-}
-
-/// A uniform value in [0, 1) from a seed, an index and a stream (SplitMix64).
-fn hash01(seed: u64, index: u64, stream: u64) -> f32 {
-    let mut z = seed
-        .wrapping_add(index.wrapping_mul(0x9E37_79B9_7F4A_7C15))
-        .wrapping_add(stream.wrapping_mul(0xD1B5_4A32_D192_ED03));
-    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    z ^= z >> 31;
-    (z >> 40) as f32 / (1u64 << 24) as f32
-}
 
 /// Renders `draw_pass` once per sample of `pattern` and averages the passes.
 ///

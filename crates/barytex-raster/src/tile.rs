@@ -1,0 +1,305 @@
+//! One tile's work: the covered pixels (or samples) of a piece, the depth test, the fragment
+//! stage and blending, into the tile's own slice of the target.
+
+use barytex_interp::Interpolate;
+use barytex_texture::sampler::CompareFunction;
+use glam::{UVec2, Vec4};
+
+use crate::assemble::Piece;
+use crate::draw::DrawStats;
+use crate::samples::SamplePattern;
+use crate::state::{Blend, Interpolation, PipelineState};
+use crate::target::{TILE, premultiply};
+use crate::{Fragment, Shader};
+
+/// A tile's slice of the target and what it needs to address it.
+pub(crate) struct TileTarget<'a> {
+    /// `[x0, y0, x1, y1)`: the tile's pixels that may be written.
+    pub(crate) rect: [i64; 4],
+    /// The tile's top-left pixel.
+    pub(crate) origin: (i64, i64),
+    pub(crate) color: &'a mut [Vec4],
+    pub(crate) depth: &'a mut [f32],
+    /// One flag per pixel (tile-local), `None`: every pixel.
+    pub(crate) mask: Option<&'a [bool]>,
+    pub(crate) pattern: SamplePattern,
+    pub(crate) samples: u32,
+}
+
+impl TileTarget<'_> {
+    #[inline]
+    fn local(&self, x: i64, y: i64) -> usize {
+        ((y - self.origin.1) * i64::from(TILE) + (x - self.origin.0)) as usize
+    }
+}
+
+fn depth_passes(op: CompareFunction, fragment: f32, stored: f32) -> bool {
+    match op {
+        CompareFunction::Never => false,
+        CompareFunction::Less => fragment < stored,
+        CompareFunction::Equal => fragment == stored,
+        CompareFunction::LessEqual => fragment <= stored,
+        CompareFunction::Greater => fragment > stored,
+        CompareFunction::NotEqual => fragment != stored,
+        CompareFunction::GreaterEqual => fragment >= stored,
+        CompareFunction::Always => true,
+    }
+}
+
+#[inline]
+fn blend(state: &PipelineState, src: Vec4, dst: Vec4) -> Vec4 {
+    match state.blend {
+        Blend::Replace => src,
+        Blend::Over => src + dst * (1.0 - src.w),
+    }
+}
+
+/// The perspective-correct weights at the two ends of the current span, for affine spans.
+struct SpanCache {
+    row: i64,
+    start: i64,
+    ends: [[f64; 3]; 2],
+}
+
+/// Rasterizes and shades one piece into the tile.
+pub(crate) fn shade_piece<S: Shader>(
+    piece: &Piece<S::Varying>,
+    shader: &S,
+    state: &PipelineState,
+    tile: &mut TileTarget<'_>,
+    stats: &mut DrawStats,
+) {
+    if tile.samples == 1 {
+        shade_single(piece, shader, state, tile, stats);
+    } else {
+        shade_multi(piece, shader, state, tile, stats);
+    }
+}
+
+/// One sample per pixel, at its centre.
+fn shade_single<S: Shader>(
+    piece: &Piece<S::Varying>,
+    shader: &S,
+    state: &PipelineState,
+    tile: &mut TileTarget<'_>,
+    stats: &mut DrawStats,
+) {
+    let context = &piece.context;
+    let span = match state.interpolation {
+        Interpolation::AffineSpans { span } => Some(i64::from(span.clamp(2, 256))),
+        _ => None,
+    };
+    let mut cache = SpanCache {
+        row: i64::MIN,
+        start: 0,
+        ends: [[0.0; 3]; 2],
+    };
+    let rect = tile.rect;
+    piece.edge.for_each_covered(rect, |x, y, lambda| {
+        let index = tile.local(x, y);
+        if let Some(mask) = tile.mask
+            && !mask[index]
+        {
+            return;
+        }
+        let z = (0..3).map(|i| lambda[i] * piece.depth[i]).sum::<f64>() as f32;
+        if let Some(op) = state.depth_compare
+            && !depth_passes(op, z, tile.depth[index])
+        {
+            stats.fragments_depth_failed += 1;
+            return;
+        }
+        let weights = match span {
+            None => context.weights(lambda),
+            Some(span) => span_weights(context, &mut cache, span, x, y, lambda),
+        };
+        let fragment = Fragment {
+            varying: S::Varying::combine3(context.varyings, context.input_weights(weights)),
+            depth: z,
+            pixel: UVec2::new(x as u32, y as u32),
+            front_facing: piece.front,
+            coverage: 1,
+            lambda,
+            piece: context,
+        };
+        stats.fragments_shaded += 1;
+        let Some(c) = shader.fragment(&fragment) else {
+            stats.fragments_discarded += 1;
+            return;
+        };
+        tile.color[index] = blend(state, premultiply(c), tile.color[index]);
+        if state.depth_write {
+            tile.depth[index] = z;
+        }
+    });
+}
+
+/// Affine spans: exact weights at the span's ends (cached along the row), linear in between.
+fn span_weights<V: Copy>(
+    context: &crate::shader::PieceContext<V>,
+    cache: &mut SpanCache,
+    span: i64,
+    x: i64,
+    y: i64,
+    lambda: [f64; 3],
+) -> [f64; 3] {
+    let start = x.div_euclid(span) * span;
+    if cache.row != y || cache.start != start {
+        // λ is affine in screen space: move it to the span's ends along the row.
+        let at = |px: i64| -> [f64; 3] {
+            let l: [f64; 3] =
+                core::array::from_fn(|i| lambda[i] + context.grads[i].x * (px - x) as f64);
+            context.weights(l)
+        };
+        let ends = [at(start), at(start + span)];
+        // Far outside the triangle 1/w may reach zero (the plane's horizon): fall back to
+        // exact weights for this span then.
+        if ends.iter().flatten().any(|w| !w.is_finite()) {
+            return context.weights(lambda);
+        }
+        *cache = SpanCache {
+            row: y,
+            start,
+            ends,
+        };
+    }
+    let t = (x - start) as f64 / span as f64;
+    let [a, b] = cache.ends;
+    core::array::from_fn(|i| a[i] + (b[i] - a[i]) * t)
+}
+
+/// Several samples per pixel: coverage and depth per sample; shading per pixel (MSAA) or per
+/// sample.
+fn shade_multi<S: Shader>(
+    piece: &Piece<S::Varying>,
+    shader: &S,
+    state: &PipelineState,
+    tile: &mut TileTarget<'_>,
+    stats: &mut DrawStats,
+) {
+    const ONE: i64 = 1 << crate::edge::SUBPIXEL_BITS;
+    let edge = &piece.edge;
+    let context = &piece.context;
+    let samples = tile.samples;
+    let pattern = tile.pattern;
+    // Edge offsets of each sample from the pixel corner, when every pixel shares them.
+    let shared: Vec<[i64; 3]> = if pattern.is_uniform() {
+        (0..samples)
+            .map(|k| {
+                let (ox, oy) = pattern.fixed_offset(0, 0, k);
+                edge.offset(ox, oy)
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let centre = edge.offset(ONE / 2, ONE / 2);
+    let rect = tile.rect;
+    let mut sample_e = [[0_i64; 3]; crate::samples::MAX_SAMPLES as usize];
+    edge.for_each_block_pixel(rect, (0, ONE - 1), (0, 0), |x, y, e, all| {
+        let mut covered = 0_u32;
+        for k in 0..samples {
+            let d = if shared.is_empty() {
+                let (ox, oy) = pattern.fixed_offset(x, y, k);
+                edge.offset(ox, oy)
+            } else {
+                shared[k as usize]
+            };
+            let s: [i64; 3] = core::array::from_fn(|i| e[i] + d[i]);
+            sample_e[k as usize] = s;
+            if all || edge.covers(s) {
+                covered |= 1 << k;
+            }
+        }
+        if covered == 0 {
+            return;
+        }
+        let pixel = tile.local(x, y);
+        if let Some(mask) = tile.mask
+            && !mask[pixel]
+        {
+            return;
+        }
+        let base = pixel * samples as usize;
+        // Depth per covered sample.
+        let mut passed = 0_u32;
+        let mut depths = [0_f32; crate::samples::MAX_SAMPLES as usize];
+        for k in 0..samples {
+            if covered & (1 << k) == 0 {
+                continue;
+            }
+            let lambda = edge.lambda(sample_e[k as usize]);
+            let z = (0..3).map(|i| lambda[i] * piece.depth[i]).sum::<f64>() as f32;
+            depths[k as usize] = z;
+            let stored = tile.depth[base + k as usize];
+            if state
+                .depth_compare
+                .is_none_or(|op| depth_passes(op, z, stored))
+            {
+                passed |= 1 << k;
+            }
+        }
+        if passed == 0 {
+            stats.fragments_depth_failed += 1;
+            return;
+        }
+        let mut shade = |lambda: [f64; 3], coverage: u32, depth: f32| {
+            let weights = context.weights(lambda);
+            let fragment = Fragment {
+                varying: S::Varying::combine3(context.varyings, context.input_weights(weights)),
+                depth,
+                pixel: UVec2::new(x as u32, y as u32),
+                front_facing: piece.front,
+                coverage,
+                lambda,
+                piece: context,
+            };
+            stats.fragments_shaded += 1;
+            let c = shader.fragment(&fragment);
+            if c.is_none() {
+                stats.fragments_discarded += 1;
+            }
+            c.map(premultiply)
+        };
+        if state.sample_shading {
+            for k in 0..samples {
+                if passed & (1 << k) == 0 {
+                    continue;
+                }
+                let lambda = edge.lambda(sample_e[k as usize]);
+                let Some(src) = shade(lambda, 1 << k, depths[k as usize]) else {
+                    continue;
+                };
+                let i = base + k as usize;
+                tile.color[i] = blend(state, src, tile.color[i]);
+                if state.depth_write {
+                    tile.depth[i] = depths[k as usize];
+                }
+            }
+        } else {
+            // Shade at the centre when it is covered, else at the first covered sample (as a
+            // GPU's centroid interpolation does: never outside the triangle).
+            let at_centre: [i64; 3] = core::array::from_fn(|i| e[i] + centre[i]);
+            let (lambda, depth) = if edge.covers(at_centre) {
+                let l = edge.lambda(at_centre);
+                (l, (0..3).map(|i| l[i] * piece.depth[i]).sum::<f64>() as f32)
+            } else {
+                let k = covered.trailing_zeros() as usize;
+                (edge.lambda(sample_e[k]), depths[k])
+            };
+            let Some(src) = shade(lambda, covered, depth) else {
+                return;
+            };
+            for k in 0..samples {
+                if passed & (1 << k) == 0 {
+                    continue;
+                }
+                let i = base + k as usize;
+                tile.color[i] = blend(state, src, tile.color[i]);
+                if state.depth_write {
+                    tile.depth[i] = depths[k as usize];
+                }
+            }
+        }
+    });
+}
