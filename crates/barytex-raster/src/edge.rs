@@ -85,9 +85,10 @@ impl EdgeSetup {
         let ys = v.map(|p| p.1);
         let min = |s: [i64; 3]| s.iter().copied().min().unwrap_or(0);
         let max = |s: [i64; 3]| s.iter().copied().max().unwrap_or(0);
-        // Pixels whose centre (x·256 + 128) can be inside.
-        let first = |lo: i64| (lo - HALF).div_euclid(ONE);
-        let last = |hi: i64| (hi - HALF).div_euclid(ONE) + 1;
+        // Pixels with any sample point (x·256 + [0, 256)) in the triangle's extent: a superset
+        // of the pixels whose centre can be inside, and all a multisampled target needs.
+        let first = |lo: i64| lo.div_euclid(ONE);
+        let last = |hi: i64| hi.div_euclid(ONE) + 1;
         Some(Self {
             a,
             b,

@@ -9,7 +9,7 @@
 //! | the draw call | [`draw`], [`DrawStats`] |
 //! | state | [`PipelineState`], [`CullMode`], [`FrontFace`], [`Viewport`], [`Scissor`], [`Blend`], [`Interpolation`] |
 //! | targets | [`Framebuffer`] (one or more samples per pixel, tile-major storage) |
-//! | anti-aliasing | multisampled targets ([`Framebuffer::multisampled`] with a [`SamplePattern`]: regular, per-pixel jitter, the GPUs' standard positions) shaded per pixel (MSAA) or per sample; [`render_supersampled`] by accumulating passes |
+//! | anti-aliasing | multisampled targets ([`Framebuffer::multisampled`] with a [`SamplePattern`]: regular, per-pixel jitter, the GPUs' standard positions) shaded per pixel (MSAA) or per sample; [`render_supersampled`] by accumulating passes; [`render_adaptive`] adds samples only where they disagree (up to 40) |
 //! | the seed's scanline backend | [`scanline::scanline_fill`]: Edge Table and Active Edge List, exact with rational arithmetic |
 //!
 //! Conventions: clip space is Vulkan's/wgpu's (`−w ≤ x, y ≤ w`, `0 ≤ z ≤ w`, y up); screen
@@ -17,6 +17,7 @@
 //! front by default.
 #![forbid(unsafe_code)]
 
+mod adaptive;
 mod assemble;
 mod clip;
 mod draw;
@@ -29,6 +30,7 @@ mod supersample;
 mod target;
 mod tile;
 
+pub use adaptive::{AdaptiveOptions, AdaptiveStats, render_adaptive};
 pub use draw::{DrawStats, draw};
 pub use edge::{MAX_COORDINATE, SUBPIXEL_BITS};
 pub use samples::{MAX_SAMPLES, SamplePattern};

@@ -143,6 +143,15 @@ impl SamplePattern {
         }
     }
 
+    /// Sample `k` of pixel `(x, y)` as an offset in pixels from the pixel's top-left corner,
+    /// exactly where a multisampled [`Framebuffer`](crate::Framebuffer) tests coverage (on the
+    /// 1/256-pixel grid).
+    #[must_use]
+    pub fn sample_offset(self, x: u32, y: u32, k: u32) -> Vec2 {
+        let (ox, oy) = self.fixed_offset(i64::from(x), i64::from(y), k);
+        Vec2::new(ox as f32, oy as f32) / ONE as f32
+    }
+
     /// Whether every pixel has the same positions.
     pub(crate) fn is_uniform(self) -> bool {
         !matches!(self, Self::Jittered { n, .. } if n > 1)

@@ -156,6 +156,12 @@ impl Framebuffer {
             .then(|| self.depth[self.pixel_index(x, y) * self.samples as usize])
     }
 
+    /// Clears every sample to `color` (straight alpha) and depth 1; the mask stays.
+    pub fn clear(&mut self, color: Vec4) {
+        self.color.fill(premultiply(color));
+        self.depth.fill(1.0);
+    }
+
     /// Restricts writes to the pixels where `keep(x, y)` holds (a stencil-like mask: masked
     /// pixels are neither shaded nor written); `None` lifts the restriction.
     pub fn set_mask(&mut self, keep: Option<&dyn Fn(u32, u32) -> bool>) {

@@ -58,6 +58,8 @@ fn blend(state: &PipelineState, src: Vec4, dst: Vec4) -> Vec4 {
 struct SpanCache {
     row: i64,
     start: i64,
+    /// The span's ends, clamped to the row's covered pixels.
+    range: (i64, i64),
     ends: [[f64; 3]; 2],
 }
 
@@ -92,6 +94,7 @@ fn shade_single<S: Shader>(
     let mut cache = SpanCache {
         row: i64::MIN,
         start: 0,
+        range: (0, 0),
         ends: [[0.0; 3]; 2],
     };
     let rect = tile.rect;
@@ -135,6 +138,9 @@ fn shade_single<S: Shader>(
 }
 
 /// Affine spans: exact weights at the span's ends (cached along the row), linear in between.
+///
+/// The ends are clamped to the row's covered pixels: beyond the triangle the perspective
+/// weights are extrapolated, and near the plane's horizon (1/w → 0) they blow up.
 fn span_weights<V: Copy>(
     context: &crate::shader::PieceContext<V>,
     cache: &mut SpanCache,
@@ -145,25 +151,35 @@ fn span_weights<V: Copy>(
 ) -> [f64; 3] {
     let start = x.div_euclid(span) * span;
     if cache.row != y || cache.start != start {
-        // λ is affine in screen space: move it to the span's ends along the row.
+        // The row's covered pixel range from here: λᵢ + gᵢ·(x′ − x) ≥ 0 for every i.
+        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+        for (l, g) in lambda.iter().zip(context.grads.map(|g| g.x)) {
+            if g > 0.0 {
+                lo = lo.max(-l / g);
+            } else if g < 0.0 {
+                hi = hi.min(-l / g);
+            }
+        }
+        // Pixel offsets from x, rounded inwards (x itself is covered: lo ≤ 0 ≤ hi).
+        let first = (x + lo.max(-1e9).ceil() as i64).clamp(start, x);
+        let last = (x + hi.min(1e9).floor() as i64).clamp(x, start + span);
         let at = |px: i64| -> [f64; 3] {
             let l: [f64; 3] =
                 core::array::from_fn(|i| lambda[i] + context.grads[i].x * (px - x) as f64);
             context.weights(l)
         };
-        let ends = [at(start), at(start + span)];
-        // Far outside the triangle 1/w may reach zero (the plane's horizon): fall back to
-        // exact weights for this span then.
-        if ends.iter().flatten().any(|w| !w.is_finite()) {
-            return context.weights(lambda);
-        }
         *cache = SpanCache {
             row: y,
             start,
-            ends,
+            range: (first, last),
+            ends: [at(first), at(last)],
         };
     }
-    let t = (x - start) as f64 / span as f64;
+    let (first, last) = cache.range;
+    if last <= first {
+        return context.weights(lambda);
+    }
+    let t = (x - first) as f64 / (last - first) as f64;
     let [a, b] = cache.ends;
     core::array::from_fn(|i| a[i] + (b[i] - a[i]) * t)
 }

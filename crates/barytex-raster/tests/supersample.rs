@@ -1,8 +1,8 @@
 //! Supersampling: a half-plane edge against its exact per-pixel area coverage.
 
 use barytex_raster::{
-    CullMode, Fragment, Framebuffer, PipelineState, SamplePattern, Shader, Viewport, draw,
-    render_supersampled,
+    AdaptiveOptions, CullMode, Fragment, Framebuffer, PipelineState, SamplePattern, Shader,
+    Viewport, draw, render_adaptive, render_supersampled,
 };
 use barytex_texture::Limits;
 use glam::{Vec2, Vec4};
@@ -134,4 +134,93 @@ fn patterns_stay_in_the_pixel_and_are_stratified() {
         SamplePattern::Regular { n: 1 }.offsets(),
         [Vec2::splat(0.5)]
     );
+}
+
+/// Adaptive supersampling spends samples near the edge only: most pixels keep the minimum,
+/// only pixels the edge crosses go past 16, and the error equals that of giving every pixel all
+/// 40 samples, at a small fraction of the samples.
+#[test]
+fn adaptive_supersampling_refines_only_the_edge() {
+    let vertices = edge_triangle();
+    let options = AdaptiveOptions::default();
+    let (fb, stats) = render_adaptive(
+        SIZE,
+        SIZE,
+        Vec4::new(0.0, 0.0, 0.0, 1.0),
+        &options,
+        &Limits::default(),
+        |fb, shift| {
+            let state = PipelineState {
+                cull: CullMode::None,
+                viewport: Some(Viewport {
+                    x: shift.x,
+                    y: shift.y,
+                    ..Viewport::full(SIZE, SIZE)
+                }),
+                ..PipelineState::default()
+            };
+            draw(fb, &White, &state, &vertices, &[0, 1, 2]);
+        },
+    )
+    .expect("small");
+    let (adaptive_mean, adaptive_max) = errors(&fb);
+    let uniform = AdaptiveOptions {
+        min_samples: 40,
+        ..options
+    };
+    let (everywhere, _) = render_adaptive(
+        SIZE,
+        SIZE,
+        Vec4::new(0.0, 0.0, 0.0, 1.0),
+        &uniform,
+        &Limits::default(),
+        |fb, shift| {
+            let state = PipelineState {
+                cull: CullMode::None,
+                viewport: Some(Viewport {
+                    x: shift.x,
+                    y: shift.y,
+                    ..Viewport::full(SIZE, SIZE)
+                }),
+                ..PipelineState::default()
+            };
+            draw(fb, &White, &state, &vertices, &[0, 1, 2]);
+        },
+    )
+    .expect("small");
+    let (uniform_mean, _) = errors(&everywhere);
+    let (grid4_mean, _) = errors(&render(SamplePattern::Regular { n: 2 }));
+    let pixels = u64::from(SIZE * SIZE);
+    let edge_pixels = (0..SIZE)
+        .flat_map(|y| (0..SIZE).map(move |x| coverage(x, y)))
+        .filter(|&c| c > 0.0 && c < 1.0)
+        .count() as u64;
+    let beyond_16: u64 = (17..=40).map(|n| stats.pixels_at(n)).sum();
+    eprintln!(
+        "adaptive: {:.2} samples/pixel, {} at 40, error mean {adaptive_mean:.4} max \
+         {adaptive_max:.4}; 40 everywhere {uniform_mean:.4}; 2×2 grid {grid4_mean:.4}",
+        stats.mean_samples(),
+        stats.pixels_at(40)
+    );
+    assert_eq!(stats.histogram.iter().sum::<u64>(), pixels);
+    assert!(
+        beyond_16 > 0 && beyond_16 <= edge_pixels,
+        "{beyond_16} > {edge_pixels}"
+    );
+    assert!(stats.pixels_at(4) >= pixels - 3 * edge_pixels);
+    assert!(stats.mean_samples() < 8.0, "{}", stats.mean_samples());
+    assert!(
+        adaptive_mean <= uniform_mean * 1.05,
+        "{adaptive_mean} vs {uniform_mean}"
+    );
+    assert!(
+        adaptive_mean < grid4_mean / 2.0,
+        "{adaptive_mean} vs {grid4_mean}"
+    );
+    // Bad options are an error, not a panic.
+    let bad = AdaptiveOptions {
+        min_samples: 1,
+        ..options
+    };
+    assert!(render_adaptive(4, 4, Vec4::ZERO, &bad, &Limits::default(), |_, _| {}).is_err());
 }
