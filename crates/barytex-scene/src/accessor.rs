@@ -3,6 +3,8 @@
 //! size), so reading can never run off a slice, and sparse substitution is validated (indices
 //! strictly increasing and in range) before it is applied.
 
+use std::collections::BTreeSet;
+
 use crate::json::{as_obj, Obj};
 use crate::{SceneError, SceneLimits};
 
@@ -199,6 +201,9 @@ impl ViewDef {
             if s % 4 != 0 {
                 return Err(obj.error("byteStride", format!("byteStride {s} is not a multiple of 4")));
             }
+            if s > length {
+                return Err(obj.error("byteStride", format!("byteStride {s} exceeds byteLength {length}")));
+            }
         }
         let target = obj.opt_u64("target")?;
         if target == Some(34963) && stride.is_some() {
@@ -240,6 +245,9 @@ pub(crate) struct AccessorDef {
     pub(crate) normalized: bool,
     pub(crate) sparse: Option<SparseDef>,
     pub(crate) has_bounds: bool,
+    /// Declared `min`/`max` (raw, un-normalised values), when present and well-formed.
+    pub(crate) min: Option<Vec<f64>>,
+    pub(crate) max: Option<Vec<f64>>,
 }
 
 fn check_range(
@@ -311,7 +319,8 @@ impl AccessorDef {
             return Err(obj.error("byteOffset", "byteOffset requires bufferView"));
         }
         let offset = offset.unwrap_or(0);
-        for key in ["min", "max"] {
+        let mut bounds: [Option<Vec<f64>>; 2] = [None, None];
+        for (slot, key) in bounds.iter_mut().zip(["min", "max"]) {
             if let Some(arr) = obj.opt_array(key)? {
                 if let Some(e) = element {
                     if arr.len() != e.components() {
@@ -321,11 +330,16 @@ impl AccessorDef {
                         ));
                     }
                 }
+                let mut values = Vec::with_capacity(arr.len());
                 for (i, v) in arr.iter().enumerate() {
-                    crate::json::as_f32(v, &crate::json::child(&obj.at(key), &i.to_string()))?;
+                    let p = crate::json::child(&obj.at(key), &i.to_string());
+                    crate::json::as_f32(v, &p)?;
+                    values.push(v.as_f64().unwrap_or(0.0));
                 }
+                *slot = Some(values);
             }
         }
+        let [min, max] = bounds;
         let has_bounds = obj.get("min").is_some() && obj.get("max").is_some();
         if let (Some(layout), Some(vi)) = (layout, view) {
             let v = views.get(vi).ok_or_else(|| obj.error("bufferView", "unresolved bufferView"))?;
@@ -378,7 +392,15 @@ impl AccessorDef {
             normalized,
             sparse,
             has_bounds,
+            min,
+            max,
         })
+    }
+
+    /// Whether the accessor stores data (a bufferView or sparse values); without either it is
+    /// all zeros, which value checks (tangent signs, keyframe order) do not apply to.
+    pub(crate) fn stores_data(&self) -> bool {
+        self.view.is_some() || self.sparse.is_some()
     }
 
     /// The layout, or an error naming the accessor when its type is unknown.
@@ -579,28 +601,58 @@ impl Reader<'_> {
     }
 
     /// Checks the accessor's data without keeping it: sparse indices ordered and in range, float
-    /// components finite.
+    /// components finite, every component within the declared `min`/`max` (which renderers use
+    /// for bounding volumes: data outside them would be culled wrongly).
     pub(crate) fn validate(&self, acc: &AccessorDef) -> Result<(), SceneError> {
         let Some(layout) = acc.layout else {
             return Ok(());
         };
         let n = layout.element.components();
+        // With sparse substitution, a base element may be replaced: check the final values.
+        let replaced: BTreeSet<usize> = match &acc.sparse {
+            Some(s) => self.sparse_indices(acc, s)?.into_iter().collect(),
+            None => BTreeSet::new(),
+        };
         let check = |i: usize, el: &[u8]| -> Result<(), SceneError> {
-            if layout.component == ComponentType::F32 {
-                for j in 0..n {
-                    let at = to_usize(layout.component_offset(j as u64))?;
-                    let v = ComponentType::F32.read_f32(el.get(at..).unwrap_or_default(), false);
-                    if !v.is_finite() {
+            for j in 0..n {
+                let at = to_usize(layout.component_offset(j as u64))?;
+                let b = el.get(at..).unwrap_or_default();
+                let v = match layout.component {
+                    ComponentType::U32 => f64::from(layout.component.read_u32(b).unwrap_or(0)),
+                    c => f64::from(c.read_f32(b, false)),
+                };
+                if !v.is_finite() {
+                    return Err(SceneError::invalid(
+                        &acc.ptr,
+                        format!("element {i} component {j} is {v}, not finite"),
+                    ));
+                }
+                let as_declared = |d: f64| {
+                    #[allow(clippy::cast_possible_truncation)]
+                    if layout.component == ComponentType::F32 { f64::from(d as f32) } else { d }
+                };
+                if let Some(&lo) = acc.min.as_ref().and_then(|m| m.get(j)) {
+                    if v < as_declared(lo) {
                         return Err(SceneError::invalid(
                             &acc.ptr,
-                            format!("element {i} component {j} is {v}, not finite"),
+                            format!("element {i} component {j} is {v}, below the declared min {lo}"),
+                        ));
+                    }
+                }
+                if let Some(&hi) = acc.max.as_ref().and_then(|m| m.get(j)) {
+                    if v > as_declared(hi) {
+                        return Err(SceneError::invalid(
+                            &acc.ptr,
+                            format!("element {i} component {j} is {v}, above the declared max {hi}"),
                         ));
                     }
                 }
             }
             Ok(())
         };
-        self.for_each_base(acc, layout, check)?;
+        self.for_each_base(acc, layout, |i, el| {
+            if replaced.contains(&i) { Ok(()) } else { check(i, el) }
+        })?;
         self.for_each_sparse(acc, layout, check)
     }
 

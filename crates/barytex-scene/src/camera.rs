@@ -73,7 +73,7 @@ impl Projection {
     }
 
     /// Reads `/cameras/i`, refusing degenerate projections (glTF 2.0 §5.12–5.14).
-    pub(crate) fn parse(obj: Obj<'_>) -> Result<Self, SceneError> {
+    pub(crate) fn parse(obj: Obj<'_>, warnings: &mut Vec<String>) -> Result<Self, SceneError> {
         let ty = obj.req_str("type")?;
         let persp = obj.opt_obj("perspective")?;
         let ortho = obj.opt_obj("orthographic")?;
@@ -94,8 +94,12 @@ impl Projection {
                 let znear = p.req_f32("znear")?;
                 let zfar = p.opt_f32("zfar")?;
                 let aspect_ratio = p.opt_f32("aspectRatio")?;
-                if yfov <= 0.0 || yfov >= std::f32::consts::PI {
-                    return Err(p.error("yfov", format!("yfov {yfov} outside (0, π)")));
+                if yfov <= 0.0 {
+                    return Err(p.error("yfov", format!("yfov {yfov} must be > 0")));
+                }
+                if yfov >= std::f32::consts::PI {
+                    // Allowed by the schema (the validator does not object); useless to render.
+                    warnings.push(format!("{}: yfov {yfov} is not below π", p.at("yfov")));
                 }
                 if znear <= 0.0 {
                     return Err(p.error("znear", format!("znear {znear} must be > 0")));

@@ -13,7 +13,9 @@ use barytex_texture::load::ColorSpace;
 use gltf::json::Value;
 use glam::{Mat4, Vec3};
 
-use crate::accessor::{AccessorDef, ComponentType, ElementType, Reader, ViewDef};
+use crate::accessor::{AccessorDef, Reader, ViewDef};
+use crate::animation::{AnimationContext, KeyframeChecks};
+use crate::skin::SkinDef;
 use crate::buffer::{self, BufferDef, Source};
 use crate::camera::{Projection, SceneCamera};
 use crate::image::ImageDef;
@@ -86,6 +88,8 @@ struct Document {
     scenes: Vec<(Option<String>, Vec<usize>)>,
     default_scene: Option<usize>,
     parents: Vec<Option<usize>>,
+    skins: Vec<SkinDef>,
+    keyframes: KeyframeChecks,
 }
 
 /// The objects of a top-level array (or an empty list when absent).
@@ -181,6 +185,7 @@ impl Document {
                 return Err(SceneError::UnsupportedExtension(r.clone()));
             }
         }
+        crate::extensions::check(root.value(), &used)?;
         let quantization = required.iter().any(|r| r == "KHR_mesh_quantization");
         let webp = used.iter().any(|u| u == "EXT_texture_webp");
 
@@ -235,16 +240,20 @@ impl Document {
         let mut cameras = Vec::new();
         for (p, v) in objects(root, "cameras")? {
             let c = as_obj(v, &p)?;
-            cameras.push((c.opt_str("name")?.map(str::to_owned), Projection::parse(c)?));
+            cameras.push((c.opt_str("name")?.map(str::to_owned), Projection::parse(c, warnings)?));
         }
         let mut lights = Vec::new();
         if let Some(ext) = root.extension("KHR_lights_punctual")? {
             let eptr = "/extensions/KHR_lights_punctual";
             let ext = as_obj(ext, eptr)?;
+            if ext.get("lights").is_none() {
+                return Err(SceneError::invalid(eptr, "required property 'lights' is missing"));
+            }
             for (p, v) in objects(ext, "lights")? {
                 lights.push(Light::parse(as_obj(v, &p)?, warnings)?);
             }
         }
+        let variants = crate::variants::root_variants(root)?;
         let mut view_use = vec![None; views.len()];
         let mut meshes = Vec::new();
         for (p, v) in objects(root, "meshes")? {
@@ -253,6 +262,7 @@ impl Document {
                 views: &views,
                 materials: &materials,
                 quantization,
+                variants,
                 view_use: &mut view_use,
             };
             meshes.push(MeshDef::parse(as_obj(v, &p)?, &mut ctx, warnings)?);
@@ -266,9 +276,9 @@ impl Document {
                 limit: limits.max_nodes as u64,
             });
         }
-        let skins = objects(root, "skins")?;
-        for (p, v) in &skins {
-            check_skin(as_obj(v, p)?, node_values.len(), &accessors, &views)?;
+        let mut skins = Vec::new();
+        for (p, v) in objects(root, "skins")? {
+            skins.push(SkinDef::parse(as_obj(v, &p)?, node_values.len(), &accessors, &views)?);
         }
         let refs = NodeRefs {
             nodes: node_values.len(),
@@ -300,8 +310,26 @@ impl Document {
             scenes.push((s.opt_str("name")?.map(str::to_owned), roots));
         }
         let default_scene = root.opt_index("scene", scenes.len(), "scene")?;
+        let scene_roots: Vec<Vec<usize>> = scenes.iter().map(|(_, r)| r.clone()).collect();
+        for (s, skin) in skins.iter().enumerate() {
+            let skinned: Vec<usize> = (0..nodes.len())
+                .filter(|&n| nodes.get(n).is_some_and(|x| x.skin == Some(s)))
+                .collect();
+            skin.check_hierarchy(&parents, &skinned, &scene_roots)?;
+        }
+        let node_info: Vec<(bool, usize)> = nodes
+            .iter()
+            .map(|n| (n.has_matrix, n.mesh.and_then(|m| mesh_targets.get(m)).map_or(0, |&(t, _)| t)))
+            .collect();
+        let actx = AnimationContext {
+            accessors: &accessors,
+            views: &views,
+            nodes: &node_info,
+            pointer_extension: used.iter().any(|u| u == "KHR_animation_pointer"),
+        };
+        let mut keyframes = KeyframeChecks::default();
         for (p, v) in objects(root, "animations")? {
-            check_animation(as_obj(v, &p)?, nodes.len(), accessors.len())?;
+            crate::animation::check(as_obj(v, &p)?, &actx, &mut keyframes, warnings)?;
         }
         Ok(Self {
             buffers,
@@ -317,6 +345,8 @@ impl Document {
             scenes,
             default_scene,
             parents,
+            skins,
+            keyframes,
         })
     }
 
@@ -353,17 +383,36 @@ impl Document {
                 reader.validate(acc)?;
             }
         }
+        let readable = |a: &AccessorDef| {
+            has_data(a.view)
+                && a.sparse
+                    .as_ref()
+                    .is_none_or(|s| has_data(Some(s.indices_view)) && has_data(Some(s.values_view)))
+        };
+        let primitive_readable = |p: &crate::mesh::PrimitiveDef| {
+            p.attributes
+                .values()
+                .chain(p.indices.as_ref())
+                .all(|&i| self.accessors.get(i).is_some_and(readable))
+        };
         for mesh in &self.meshes {
             for p in &mesh.primitives {
-                let readable = p
-                    .indices
-                    .and_then(|i| self.accessors.get(i))
-                    .is_none_or(|a| has_data(a.view));
-                if p.vertex_count.is_some() && readable {
+                if p.vertex_count.is_some() && primitive_readable(p) {
                     p.read_indices(&self.accessors, &reader)?;
+                    p.check_tangents(&self.accessors, &reader)?;
                 }
             }
         }
+        for skin in &self.skins {
+            if skin
+                .inverse_bind_matrices
+                .and_then(|i| self.accessors.get(i))
+                .is_some_and(readable)
+            {
+                skin.check_data(&self.accessors, &reader)?;
+            }
+        }
+        crate::animation::check_data(&self.keyframes, &self.accessors, &reader, readable)?;
 
         // The scene: the requested one, the default one, the first, or every root node.
         let scene_index = match options.scene {
@@ -456,6 +505,11 @@ impl Document {
             let Some(def) = self.meshes.get(m) else { continue };
             let mut primitives = Vec::new();
             for p in &def.primitives {
+                if !primitive_readable(p) {
+                    stats.primitives_skipped_other += 1;
+                    warnings.push(format!("{}: primitive skipped, its buffers have no data", p.ptr));
+                    continue;
+                }
                 match p.decode(&self.accessors, &reader)? {
                     Some(prim) => {
                         stats.primitives_loaded += 1;
@@ -503,7 +557,9 @@ impl Document {
             for p in &mesh.primitives {
                 if let Some(mat) = p.material.and_then(|i| self.materials.get(i)) {
                     for (t, cs) in mat.texture_refs() {
-                        wanted.insert((t.image, cs == ColorSpace::Srgb));
+                        if let Some(image) = t.image {
+                            wanted.insert((image, cs == ColorSpace::Srgb));
+                        }
                     }
                 }
             }
@@ -556,52 +612,4 @@ impl Document {
             stats,
         })
     }
-}
-
-/// Index and format checks for a skin (skins are not loaded, but must not be broken).
-fn check_skin(s: Obj<'_>, nodes: usize, accessors: &[AccessorDef], views: &[ViewDef]) -> Result<(), SceneError> {
-    let joints = s
-        .opt_indices("joints", nodes, "node")?
-        .ok_or_else(|| SceneError::invalid(s.ptr, "required property 'joints' is missing"))?;
-    s.opt_index("skeleton", nodes, "node")?;
-    if let Some(i) = s.opt_index("inverseBindMatrices", accessors.len(), "accessor")? {
-        let acc = accessors
-            .get(i)
-            .ok_or_else(|| s.error("inverseBindMatrices", "unresolved accessor"))?;
-        let ok = acc
-            .layout
-            .is_some_and(|l| l.element == ElementType::Mat4 && l.component == ComponentType::F32);
-        if !ok {
-            return Err(s.error("inverseBindMatrices", "inverse bind matrices must be MAT4 FLOAT"));
-        }
-        if acc.count < joints.len() as u64 {
-            return Err(s.error("inverseBindMatrices", "fewer inverse bind matrices than joints"));
-        }
-        if acc.view.and_then(|v| views.get(v)).is_some_and(|v| v.stride.is_some()) {
-            return Err(s.error("inverseBindMatrices", "the bufferView must not define byteStride"));
-        }
-    }
-    Ok(())
-}
-
-/// Index checks for an animation (animations are not loaded, but must not be broken).
-fn check_animation(a: Obj<'_>, nodes: usize, accessors: usize) -> Result<(), SceneError> {
-    let samplers = objects(a, "samplers")?;
-    for (p, v) in &samplers {
-        let s = as_obj(v, p)?;
-        s.req_index("input", accessors, "accessor")?;
-        s.req_index("output", accessors, "accessor")?;
-    }
-    for (p, v) in objects(a, "channels")? {
-        let c = as_obj(v, &p)?;
-        c.req_index("sampler", samplers.len(), "sampler")?;
-        let tptr = c.at("target");
-        let target = c
-            .get("target")
-            .ok_or_else(|| SceneError::invalid(c.ptr, "required property 'target' is missing"))?;
-        let target = as_obj(target, &tptr)?;
-        target.opt_index("node", nodes, "node")?;
-        target.req_str("path")?;
-    }
-    Ok(())
 }

@@ -256,10 +256,11 @@ pub(crate) fn check_index(index: u64, len: usize, what: &str, ptr: &str) -> Resu
 /// Walks the tree refusing empty arrays, which the glTF schema forbids everywhere
 /// (`minItems: 1`), except inside `extras` and inside extensions this crate does not read.
 pub(crate) fn check_no_empty_arrays(value: &Value, ptr: &str, depth: usize) -> Result<(), SceneError> {
-    const KNOWN_EXTENSIONS: [&str; 3] = [
+    const KNOWN_EXTENSIONS: [&str; 4] = [
         "KHR_lights_punctual",
         "KHR_texture_transform",
         "KHR_materials_unlit",
+        "KHR_materials_variants",
     ];
     if depth > 128 {
         return Err(SceneError::invalid(ptr, "JSON nested too deeply"));

@@ -35,10 +35,12 @@
 #![forbid(unsafe_code)]
 
 mod accessor;
+mod animation;
 mod buffer;
 pub mod camera;
 mod document;
 mod error;
+mod extensions;
 mod glb;
 mod image;
 mod json;
@@ -49,8 +51,10 @@ pub mod mesh;
 mod node;
 pub mod sampler;
 pub mod scene;
+mod skin;
 pub mod topology;
 mod uri;
+mod variants;
 
 use std::path::Path;
 

@@ -28,8 +28,9 @@ pub enum AlphaMode {
 pub struct TextureRef {
     /// Index into the document's `textures`.
     pub texture: usize,
-    /// Index into the document's `images` (the texture's `source`).
-    pub image: usize,
+    /// Index into the document's `images` (the texture's `source`); `None` when the texture
+    /// has no core source (only an extension's, e.g. `EXT_texture_webp`).
+    pub image: Option<usize>,
     /// The texture's sampler (defaults when it has none).
     pub sampler: Sampler,
     /// Which `TEXCOORD_n` set to read (after any `KHR_texture_transform` override).
@@ -182,8 +183,68 @@ impl Material {
         };
         m.double_sided = obj.opt_bool("doubleSided")?.unwrap_or(false);
         m.unlit = obj.extension("KHR_materials_unlit")?.is_some();
+        check_pbr_extension_ranges(obj)?;
         Ok(m)
     }
+}
+
+/// How a numeric property of a PBR extension is bounded.
+#[derive(Clone, Copy)]
+enum Range {
+    Unit,
+    NonNegative,
+    Positive,
+    /// `KHR_materials_ior`: 0 or at least 1.
+    Ior,
+}
+
+/// The numeric bounds of the Khronos PBR extensions. They are not rendered by this crate, but
+/// out-of-range values mark a broken file (the validator's VALUE_NOT_IN_RANGE).
+const PBR_EXTENSION_RANGES: &[(&str, &str, Range)] = &[
+    ("KHR_materials_anisotropy", "anisotropyStrength", Range::Unit),
+    ("KHR_materials_clearcoat", "clearcoatFactor", Range::Unit),
+    ("KHR_materials_clearcoat", "clearcoatRoughnessFactor", Range::Unit),
+    ("KHR_materials_dispersion", "dispersion", Range::NonNegative),
+    ("KHR_materials_emissive_strength", "emissiveStrength", Range::NonNegative),
+    ("KHR_materials_ior", "ior", Range::Ior),
+    ("KHR_materials_iridescence", "iridescenceFactor", Range::Unit),
+    ("KHR_materials_sheen", "sheenRoughnessFactor", Range::Unit),
+    ("KHR_materials_sheen", "sheenColorFactor", Range::Unit),
+    ("KHR_materials_specular", "specularFactor", Range::Unit),
+    ("KHR_materials_specular", "specularColorFactor", Range::NonNegative),
+    ("KHR_materials_transmission", "transmissionFactor", Range::Unit),
+    ("KHR_materials_volume", "thicknessFactor", Range::NonNegative),
+    ("KHR_materials_volume", "attenuationDistance", Range::Positive),
+    ("KHR_materials_volume", "attenuationColor", Range::Unit),
+];
+
+fn check_pbr_extension_ranges(obj: Obj<'_>) -> Result<(), SceneError> {
+    for &(ext, key, range) in PBR_EXTENSION_RANGES {
+        let Some(e) = obj.extension(ext)? else { continue };
+        let ptr = crate::json::child(&obj.at("extensions"), ext);
+        let e = as_obj(e, &ptr)?;
+        let values: Vec<f32> = match e.get(key) {
+            None => continue,
+            Some(gltf::json::Value::Array(items)) => items
+                .iter()
+                .enumerate()
+                .map(|(i, v)| crate::json::as_f32(v, &crate::json::child(&e.at(key), &i.to_string())))
+                .collect::<Result<_, _>>()?,
+            Some(v) => vec![crate::json::as_f32(v, &e.at(key))?],
+        };
+        for v in values {
+            let ok = match range {
+                Range::Unit => (0.0..=1.0).contains(&v),
+                Range::NonNegative => v >= 0.0,
+                Range::Positive => v > 0.0,
+                Range::Ior => v == 0.0 || v >= 1.0,
+            };
+            if !ok {
+                return Err(e.error(key, format!("{v} is out of range")));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// A factor in [0, 1] with a default.
@@ -211,10 +272,6 @@ fn texture_ref(
         .get(texture)
         .copied()
         .ok_or_else(|| info.error("index", "unresolved texture"))?;
-    let Some(image) = image else {
-        // A texture whose source is given only by an unsupported extension: no image to sample.
-        return Ok(None);
-    };
     let mut tex_coord = u32::try_from(info.opt_u64("texCoord")?.unwrap_or(0))
         .map_err(|_| info.error("texCoord", "texCoord out of range"))?;
     let mut transform = Mat3::IDENTITY;

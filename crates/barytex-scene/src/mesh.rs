@@ -79,6 +79,8 @@ pub(crate) struct MeshContext<'a> {
     pub(crate) views: &'a [ViewDef],
     pub(crate) materials: &'a [Material],
     pub(crate) quantization: bool,
+    /// Variants of `KHR_materials_variants`, `None` without the root extension.
+    pub(crate) variants: Option<usize>,
     pub(crate) view_use: &'a mut Vec<Option<ViewUse>>,
 }
 
@@ -311,6 +313,7 @@ fn parse_primitive(
         }
     }
     let material = p.opt_index("material", ctx.materials.len(), "material")?;
+    crate::variants::check_primitive(p, ctx.variants, ctx.materials.len())?;
     let mode = p.opt_u64("mode")?.unwrap_or(4);
     let topology = Topology::from_gl(mode);
     if topology.is_none() {
@@ -405,6 +408,24 @@ impl PrimitiveDef {
                 Ok(values)
             }
         }
+    }
+
+    /// Tangents' `w` must be exactly ±1 (the bitangent sign).
+    pub(crate) fn check_tangents(&self, accessors: &[AccessorDef], reader: &Reader<'_>) -> Result<(), SceneError> {
+        let Some(acc) = self
+            .attributes
+            .get("TANGENT")
+            .and_then(|&i| accessors.get(i))
+            .filter(|a| a.stores_data())
+        else {
+            return Ok(());
+        };
+        for (k, t) in reader.read_f32::<4>(acc)?.into_iter().enumerate() {
+            if t[3] != 1.0 && t[3] != -1.0 {
+                return Err(SceneError::invalid(&acc.ptr, format!("tangent {k} has w = {}, not ±1", t[3])));
+            }
+        }
+        Ok(())
     }
 
     /// Decodes the primitive; `None` when it is not made of triangles or has no positions.

@@ -15,6 +15,8 @@ pub(crate) struct NodeDef {
     pub(crate) mesh: Option<usize>,
     pub(crate) camera: Option<usize>,
     pub(crate) light: Option<usize>,
+    pub(crate) skin: Option<usize>,
+    pub(crate) has_matrix: bool,
     pub(crate) local: Mat4,
 }
 
@@ -72,7 +74,12 @@ impl NodeDef {
                 if translation.is_some() || rotation.is_some() || scale.is_some() {
                     return Err(obj.error("matrix", "matrix and translation/rotation/scale are both defined"));
                 }
-                Mat4::from_cols_array(&m)
+                let m = Mat4::from_cols_array(&m);
+                // A node matrix must decompose into TRS: no projective row (glTF 2.0 §3.5.2).
+                if m.row(3) != glam::Vec4::W {
+                    return Err(obj.error("matrix", "the matrix is not affine (last row is not 0, 0, 0, 1)"));
+                }
+                m
             }
             None => {
                 let t = translation.map_or(Vec3::ZERO, Vec3::from);
@@ -85,8 +92,10 @@ impl NodeDef {
                         }
                         let q = Quat::from_array(q);
                         let len = q.length();
-                        if !(len > 1e-6) {
-                            return Err(obj.error("rotation", "a zero quaternion is not a rotation"));
+                        // Exporters write unit quaternions to about 7 digits; anything far off
+                        // is not a rotation (the validator's ROTATION_NON_UNIT).
+                        if !((len - 1.0).abs() <= 1e-3) {
+                            return Err(obj.error("rotation", format!("quaternion length {len} is not 1")));
                         }
                         // Normalised: tiny export errors must not become scale.
                         q / len
@@ -104,6 +113,8 @@ impl NodeDef {
             mesh,
             camera,
             light,
+            skin,
+            has_matrix: matrix.is_some(),
             local,
         })
     }
@@ -183,6 +194,8 @@ mod tests {
             mesh: None,
             camera: None,
             light: None,
+            skin: None,
+            has_matrix: false,
             local: Mat4::IDENTITY,
         }
     }

@@ -40,7 +40,12 @@ pub(crate) fn parse(uri: &str, max_bytes: u64) -> Result<Uri, String> {
             }
         }
         if !base64 {
-            return Err("data URIs must be base64-encoded".to_owned());
+            // RFC 2397: without ";base64" the payload is percent-encoded octets.
+            if payload.len() as u64 > max_bytes {
+                return Err(format!("data URI of {} bytes exceeds the limit {max_bytes}", payload.len()));
+            }
+            let bytes: Vec<u8> = percent_encoding::percent_decode_str(payload).collect();
+            return Ok(Uri::Data { media_type, bytes });
         }
         let claimed = (payload.len() as u64 / 4).saturating_mul(3);
         if claimed > max_bytes {
@@ -125,6 +130,13 @@ mod tests {
             })
         );
         assert!(parse("data:application/octet-stream;;base64,AA==", 100).is_err());
+        assert_eq!(
+            parse("data:application/gltf-buffer,0%01", 100),
+            Ok(Uri::Data {
+                media_type: "application/gltf-buffer".into(),
+                bytes: vec![b'0', 1]
+            })
+        );
         assert!(parse("data:image/png;base64,`", 100).is_err());
         assert!(parse("data:application/octet-stream;base64,AAECAAEC", 3).is_err());
     }
