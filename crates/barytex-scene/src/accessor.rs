@@ -5,7 +5,7 @@
 
 use std::collections::BTreeSet;
 
-use crate::json::{as_obj, Obj};
+use crate::json::{Obj, as_obj};
 use crate::{SceneError, SceneLimits};
 
 /// A component type (`componentType`, a GL enum).
@@ -62,7 +62,11 @@ impl ComponentType {
             }
             Self::I16 => {
                 let v = f32::from(i16::from_le_bytes([byte(0), byte(1)]));
-                if normalized { (v / 32767.0).max(-1.0) } else { v }
+                if normalized {
+                    (v / 32767.0).max(-1.0)
+                } else {
+                    v
+                }
             }
             Self::U16 => {
                 let v = f32::from(u16::from_le_bytes([byte(0), byte(1)]));
@@ -149,7 +153,11 @@ impl Layout {
     fn column_stride(self) -> u64 {
         let (_, rows) = self.element.shape();
         let raw = rows * self.component.size();
-        if self.element.is_matrix() { raw.div_ceil(4) * 4 } else { raw }
+        if self.element.is_matrix() {
+            raw.div_ceil(4) * 4
+        } else {
+            raw
+        }
     }
 
     /// Bytes one element occupies.
@@ -185,7 +193,10 @@ impl ViewDef {
             return Err(obj.error("byteLength", "byteLength must be ≥ 1"));
         }
         let buffer_length = buffer_lengths.get(buffer).copied().unwrap_or(0);
-        if offset.checked_add(length).is_none_or(|end| end > buffer_length) {
+        if offset
+            .checked_add(length)
+            .is_none_or(|end| end > buffer_length)
+        {
             return Err(SceneError::invalid(
                 obj.ptr,
                 format!(
@@ -199,10 +210,16 @@ impl ViewDef {
                 return Err(obj.error("byteStride", format!("byteStride {s} outside [4, 252]")));
             }
             if s % 4 != 0 {
-                return Err(obj.error("byteStride", format!("byteStride {s} is not a multiple of 4")));
+                return Err(obj.error(
+                    "byteStride",
+                    format!("byteStride {s} is not a multiple of 4"),
+                ));
             }
             if s > length {
-                return Err(obj.error("byteStride", format!("byteStride {s} exceeds byteLength {length}")));
+                return Err(obj.error(
+                    "byteStride",
+                    format!("byteStride {s} exceeds byteLength {length}"),
+                ));
             }
         }
         let target = obj.opt_u64("target")?;
@@ -300,12 +317,17 @@ impl AccessorDef {
         let component = ComponentType::from_gl(component_gl);
         let element = ElementType::parse(type_str);
         if component.is_none() {
-            warnings.push(format!("{}: unknown componentType {component_gl}", obj.at("componentType")));
+            warnings.push(format!(
+                "{}: unknown componentType {component_gl}",
+                obj.at("componentType")
+            ));
         }
         if element.is_none() {
             warnings.push(format!("{}: unknown type {type_str:?}", obj.at("type")));
         }
-        let layout = component.zip(element).map(|(component, element)| Layout { component, element });
+        let layout = component
+            .zip(element)
+            .map(|(component, element)| Layout { component, element });
         let normalized = obj.opt_bool("normalized")?.unwrap_or(false);
         if normalized && matches!(component, Some(ComponentType::F32 | ComponentType::U32)) {
             return Err(obj.error(
@@ -326,7 +348,11 @@ impl AccessorDef {
                     if arr.len() != e.components() {
                         return Err(obj.error(
                             key,
-                            format!("{} values for a {}-component type", arr.len(), e.components()),
+                            format!(
+                                "{} values for a {}-component type",
+                                arr.len(),
+                                e.components()
+                            ),
                         ));
                     }
                 }
@@ -342,7 +368,9 @@ impl AccessorDef {
         let [min, max] = bounds;
         let has_bounds = obj.get("min").is_some() && obj.get("max").is_some();
         if let (Some(layout), Some(vi)) = (layout, view) {
-            let v = views.get(vi).ok_or_else(|| obj.error("bufferView", "unresolved bufferView"))?;
+            let v = views
+                .get(vi)
+                .ok_or_else(|| obj.error("bufferView", "unresolved bufferView"))?;
             let size = layout.component.size();
             if offset % size != 0 {
                 return Err(obj.error(
@@ -360,7 +388,9 @@ impl AccessorDef {
             if layout.element.is_matrix() && layout.component.size() < 4 {
                 if let Some(s) = v.stride {
                     if s % 4 != 0 {
-                        return Err(obj.error("bufferView", "matrix columns must be 4-byte aligned"));
+                        return Err(
+                            obj.error("bufferView", "matrix columns must be 4-byte aligned")
+                        );
                     }
                 }
             }
@@ -406,7 +436,10 @@ impl AccessorDef {
     /// The layout, or an error naming the accessor when its type is unknown.
     pub(crate) fn layout(&self) -> Result<Layout, SceneError> {
         self.layout.ok_or_else(|| {
-            SceneError::invalid(&self.ptr, "accessor with an unknown type or componentType is used")
+            SceneError::invalid(
+                &self.ptr,
+                "accessor with an unknown type or componentType is used",
+            )
         })
     }
 }
@@ -454,25 +487,47 @@ fn parse_sparse(
         .get(indices_view)
         .ok_or_else(|| indices.error("bufferView", "unresolved bufferView"))?;
     if iv.stride.is_some() {
-        return Err(indices.error("bufferView", "sparse indices' bufferView must not define byteStride"));
+        return Err(indices.error(
+            "bufferView",
+            "sparse indices' bufferView must not define byteStride",
+        ));
     }
     let isize_ = indices_component.size();
     if (iv.offset + indices_offset) % isize_ != 0 {
         return Err(indices.error("byteOffset", "sparse indices are misaligned"));
     }
-    check_range(&iptr, "sparse indices", iv, indices_offset, isize_, sparse_count, isize_)?;
+    check_range(
+        &iptr,
+        "sparse indices",
+        iv,
+        indices_offset,
+        isize_,
+        sparse_count,
+        isize_,
+    )?;
     let vv = views
         .get(values_view)
         .ok_or_else(|| values.error("bufferView", "unresolved bufferView"))?;
     if vv.stride.is_some() {
-        return Err(values.error("bufferView", "sparse values' bufferView must not define byteStride"));
+        return Err(values.error(
+            "bufferView",
+            "sparse values' bufferView must not define byteStride",
+        ));
     }
     if let Some(layout) = layout {
         let es = layout.element_size();
         if (vv.offset + values_offset) % layout.component.size() != 0 {
             return Err(values.error("byteOffset", "sparse values are misaligned"));
         }
-        check_range(&vptr, "sparse values", vv, values_offset, es, sparse_count, es)?;
+        check_range(
+            &vptr,
+            "sparse values",
+            vv,
+            values_offset,
+            es,
+            sparse_count,
+            es,
+        )?;
     }
     Ok(SparseDef {
         count: sparse_count,
@@ -506,7 +561,10 @@ impl Reader<'_> {
                 SceneError::invalid(ptr, format!("buffer {} has no data to read", v.buffer))
             })?;
         let start = usize::try_from(v.offset).ok();
-        let end = v.offset.checked_add(v.length).and_then(|e| usize::try_from(e).ok());
+        let end = v
+            .offset
+            .checked_add(v.length)
+            .and_then(|e| usize::try_from(e).ok());
         start
             .zip(end)
             .and_then(|(s, e)| data.get(s..e))
@@ -629,13 +687,19 @@ impl Reader<'_> {
                 }
                 let as_declared = |d: f64| {
                     #[allow(clippy::cast_possible_truncation)]
-                    if layout.component == ComponentType::F32 { f64::from(d as f32) } else { d }
+                    if layout.component == ComponentType::F32 {
+                        f64::from(d as f32)
+                    } else {
+                        d
+                    }
                 };
                 if let Some(&lo) = acc.min.as_ref().and_then(|m| m.get(j)) {
                     if v < as_declared(lo) {
                         return Err(SceneError::invalid(
                             &acc.ptr,
-                            format!("element {i} component {j} is {v}, below the declared min {lo}"),
+                            format!(
+                                "element {i} component {j} is {v}, below the declared min {lo}"
+                            ),
                         ));
                     }
                 }
@@ -643,7 +707,9 @@ impl Reader<'_> {
                     if v > as_declared(hi) {
                         return Err(SceneError::invalid(
                             &acc.ptr,
-                            format!("element {i} component {j} is {v}, above the declared max {hi}"),
+                            format!(
+                                "element {i} component {j} is {v}, above the declared max {hi}"
+                            ),
                         ));
                     }
                 }
@@ -651,14 +717,21 @@ impl Reader<'_> {
             Ok(())
         };
         self.for_each_base(acc, layout, |i, el| {
-            if replaced.contains(&i) { Ok(()) } else { check(i, el) }
+            if replaced.contains(&i) {
+                Ok(())
+            } else {
+                check(i, el)
+            }
         })?;
         self.for_each_sparse(acc, layout, check)
     }
 
     /// Reads every element as `N` floats (normalised per the accessor's flag), sparse applied.
     /// `N` must equal the accessor's component count.
-    pub(crate) fn read_f32<const N: usize>(&self, acc: &AccessorDef) -> Result<Vec<[f32; N]>, SceneError> {
+    pub(crate) fn read_f32<const N: usize>(
+        &self,
+        acc: &AccessorDef,
+    ) -> Result<Vec<[f32; N]>, SceneError> {
         let layout = acc.layout()?;
         if layout.element.components() != N {
             return Err(SceneError::invalid(
@@ -741,19 +814,31 @@ mod tests {
         assert_eq!(ComponentType::I8.read_f32(&[0x80], true), -1.0);
         assert_eq!(ComponentType::I8.read_f32(&[127], true), 1.0);
         assert_eq!(ComponentType::U8.read_f32(&[255], true), 1.0);
-        assert_eq!(ComponentType::I16.read_f32(&0x8000u16.to_le_bytes(), true), -1.0);
+        assert_eq!(
+            ComponentType::I16.read_f32(&0x8000u16.to_le_bytes(), true),
+            -1.0
+        );
         assert_eq!(ComponentType::U16.read_f32(&[0xff, 0xff], true), 1.0);
         assert_eq!(ComponentType::U16.read_f32(&[2, 0], false), 2.0);
     }
 
     #[test]
     fn matrix_columns_are_padded() {
-        let mat3_u8 = Layout { component: ComponentType::U8, element: ElementType::Mat3 };
+        let mat3_u8 = Layout {
+            component: ComponentType::U8,
+            element: ElementType::Mat3,
+        };
         assert_eq!(mat3_u8.element_size(), 12);
         assert_eq!(mat3_u8.component_offset(3), 4);
-        let mat2_i16 = Layout { component: ComponentType::I16, element: ElementType::Mat2 };
+        let mat2_i16 = Layout {
+            component: ComponentType::I16,
+            element: ElementType::Mat2,
+        };
         assert_eq!(mat2_i16.element_size(), 8);
-        let mat3_i16 = Layout { component: ComponentType::I16, element: ElementType::Mat3 };
+        let mat3_i16 = Layout {
+            component: ComponentType::I16,
+            element: ElementType::Mat3,
+        };
         assert_eq!(mat3_i16.element_size(), 24);
     }
 }

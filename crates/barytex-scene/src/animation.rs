@@ -4,9 +4,9 @@
 
 use std::collections::BTreeSet;
 
-use crate::accessor::{AccessorDef, ComponentType, ElementType, Reader, ViewDef};
-use crate::json::{as_obj, child, Obj};
 use crate::SceneError;
+use crate::accessor::{AccessorDef, ComponentType, ElementType, Reader, ViewDef};
+use crate::json::{Obj, as_obj, child};
 
 /// What animation checks need to know about the rest of the document.
 pub(crate) struct AnimationContext<'a> {
@@ -27,11 +27,25 @@ pub(crate) struct KeyframeChecks {
     pub(crate) rotations: BTreeSet<(usize, bool)>,
 }
 
-fn accessor<'a>(ctx: &AnimationContext<'a>, s: Obj<'_>, key: &str) -> Result<(usize, &'a AccessorDef), SceneError> {
+fn accessor<'a>(
+    ctx: &AnimationContext<'a>,
+    s: Obj<'_>,
+    key: &str,
+) -> Result<(usize, &'a AccessorDef), SceneError> {
     let i = s.req_index(key, ctx.accessors.len(), "accessor")?;
-    let acc = ctx.accessors.get(i).ok_or_else(|| s.error(key, "unresolved accessor"))?;
-    if acc.view.and_then(|v| ctx.views.get(v)).is_some_and(|v| v.stride.is_some()) {
-        return Err(s.error(key, "animation sampler accessors' bufferViews must not define byteStride"));
+    let acc = ctx
+        .accessors
+        .get(i)
+        .ok_or_else(|| s.error(key, "unresolved accessor"))?;
+    if acc
+        .view
+        .and_then(|v| ctx.views.get(v))
+        .is_some_and(|v| v.stride.is_some())
+    {
+        return Err(s.error(
+            key,
+            "animation sampler accessors' bufferViews must not define byteStride",
+        ));
     }
     Ok((i, acc))
 }
@@ -67,7 +81,10 @@ pub(crate) fn check(
             None | Some("LINEAR" | "STEP") => false,
             Some("CUBICSPLINE") => true,
             Some(other) => {
-                warnings.push(format!("{}: unknown interpolation {other:?}", s.at("interpolation")));
+                warnings.push(format!(
+                    "{}: unknown interpolation {other:?}",
+                    s.at("interpolation")
+                ));
                 false
             }
         };
@@ -101,11 +118,15 @@ pub(crate) fn check(
                     return Err(target.error("node", "a 'pointer' target must not define node"));
                 }
                 let eptr = child(&target.at("extensions"), "KHR_animation_pointer");
-                let ext = pointer_ext
-                    .ok_or_else(|| SceneError::invalid(&tptr, "a 'pointer' target needs KHR_animation_pointer"))?;
+                let ext = pointer_ext.ok_or_else(|| {
+                    SceneError::invalid(&tptr, "a 'pointer' target needs KHR_animation_pointer")
+                })?;
                 let pointer = as_obj(ext, &eptr)?.req_str("pointer")?.to_owned();
                 if !pointer.starts_with('/') {
-                    return Err(SceneError::invalid(eptr, format!("{pointer:?} is not a JSON pointer")));
+                    return Err(SceneError::invalid(
+                        eptr,
+                        format!("{pointer:?} is not a JSON pointer"),
+                    ));
                 }
                 continue;
             } else if pointer_ext.is_some() {
@@ -116,11 +137,18 @@ pub(crate) fn check(
             "translation" | "rotation" | "scale" => 1,
             "weights" => match node.and_then(|n| ctx.nodes.get(n)) {
                 Some(&(_, targets)) if targets > 0 => targets,
-                Some(_) => return Err(target.error("path", "animating weights of a node without morph targets")),
+                Some(_) => {
+                    return Err(
+                        target.error("path", "animating weights of a node without morph targets")
+                    );
+                }
                 None => 1,
             },
             other => {
-                warnings.push(format!("{}: unknown path {other:?}, channel ignored", target.at("path")));
+                warnings.push(format!(
+                    "{}: unknown path {other:?}, channel ignored",
+                    target.at("path")
+                ));
                 continue;
             }
         };
@@ -129,7 +157,10 @@ pub(crate) fn check(
                 return Err(target.error("node", "animating TRS of a node defined by a matrix"));
             }
             if !targets.insert((n, path.to_owned())) {
-                return Err(SceneError::invalid(&tptr, format!("node {n} {path} is animated twice")));
+                return Err(SceneError::invalid(
+                    &tptr,
+                    format!("node {n} {path} is animated twice"),
+                ));
             }
         }
         let (input_count, output_index, output, cubic) = parsed
@@ -137,15 +168,29 @@ pub(crate) fn check(
             .ok_or_else(|| c.error("sampler", "unresolved sampler"))?;
         let layout = output.layout()?;
         let normalized_int = output.normalized
-            && matches!(layout.component, ComponentType::I8 | ComponentType::U8 | ComponentType::I16 | ComponentType::U16);
+            && matches!(
+                layout.component,
+                ComponentType::I8 | ComponentType::U8 | ComponentType::I16 | ComponentType::U16
+            );
         let ok = match path {
-            "translation" | "scale" => layout.element == ElementType::Vec3 && layout.component == ComponentType::F32,
-            "rotation" => layout.element == ElementType::Vec4 && (layout.component == ComponentType::F32 || normalized_int),
-            _ => layout.element == ElementType::Scalar && (layout.component == ComponentType::F32 || normalized_int),
+            "translation" | "scale" => {
+                layout.element == ElementType::Vec3 && layout.component == ComponentType::F32
+            }
+            "rotation" => {
+                layout.element == ElementType::Vec4
+                    && (layout.component == ComponentType::F32 || normalized_int)
+            }
+            _ => {
+                layout.element == ElementType::Scalar
+                    && (layout.component == ComponentType::F32 || normalized_int)
+            }
         };
         let out_ptr = format!("{samplers_ptr}/{sampler}/output");
         if !ok {
-            return Err(SceneError::invalid(out_ptr, format!("output format not allowed for {path}")));
+            return Err(SceneError::invalid(
+                out_ptr,
+                format!("output format not allowed for {path}"),
+            ));
         }
         let expected = input_count * per_key as u64 * if *cubic { 3 } else { 1 };
         if output.count != expected {
@@ -169,28 +214,41 @@ pub(crate) fn check_data(
     readable: impl Fn(&AccessorDef) -> bool,
 ) -> Result<(), SceneError> {
     for &i in &checks.inputs {
-        let Some(acc) = accessors.get(i).filter(|a| a.stores_data() && readable(a)) else { continue };
+        let Some(acc) = accessors.get(i).filter(|a| a.stores_data() && readable(a)) else {
+            continue;
+        };
         let times = reader.read_f32::<1>(acc)?;
         let mut prev = None;
         for (k, [t]) in times.into_iter().enumerate() {
             if t < 0.0 {
-                return Err(SceneError::invalid(&acc.ptr, format!("keyframe {k} time {t} is negative")));
+                return Err(SceneError::invalid(
+                    &acc.ptr,
+                    format!("keyframe {k} time {t} is negative"),
+                ));
             }
             if prev.is_some_and(|p| t <= p) {
-                return Err(SceneError::invalid(&acc.ptr, format!("keyframe {k} time {t} does not increase")));
+                return Err(SceneError::invalid(
+                    &acc.ptr,
+                    format!("keyframe {k} time {t} does not increase"),
+                ));
             }
             prev = Some(t);
         }
     }
     for &(i, cubic) in &checks.rotations {
-        let Some(acc) = accessors.get(i).filter(|a| a.stores_data() && readable(a)) else { continue };
+        let Some(acc) = accessors.get(i).filter(|a| a.stores_data() && readable(a)) else {
+            continue;
+        };
         for (k, q) in reader.read_f32::<4>(acc)?.into_iter().enumerate() {
             if cubic && k % 3 != 1 {
                 continue; // in/out tangents need not be unit
             }
             let len = glam::Vec4::from(q).length();
             if (len - 1.0).abs() > 1e-3 {
-                return Err(SceneError::invalid(&acc.ptr, format!("rotation keyframe {k} has length {len}")));
+                return Err(SceneError::invalid(
+                    &acc.ptr,
+                    format!("rotation keyframe {k} has length {len}"),
+                ));
             }
         }
     }

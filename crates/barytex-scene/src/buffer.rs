@@ -37,7 +37,9 @@ impl BufferDef {
                 let parsed = uri::parse(s, limits.max_buffer_bytes)
                     .map_err(|reason| obj.error("uri", reason))?;
                 if let Uri::Data { media_type, .. } = &parsed {
-                    if media_type != "application/octet-stream" && media_type != "application/gltf-buffer" {
+                    if media_type != "application/octet-stream"
+                        && media_type != "application/gltf-buffer"
+                    {
                         return Err(obj.error(
                             "uri",
                             format!("buffer data URI media type {media_type:?} is not application/octet-stream or application/gltf-buffer"),
@@ -75,7 +77,10 @@ pub(crate) fn load_all(
     limits: &SceneLimits,
     warnings: &mut Vec<String>,
 ) -> Result<Vec<Option<Vec<u8>>>, SceneError> {
-    let total: u64 = defs.iter().map(|d| d.byte_length).fold(0, u64::saturating_add);
+    let total: u64 = defs
+        .iter()
+        .map(|d| d.byte_length)
+        .fold(0, u64::saturating_add);
     if total > limits.max_total_buffer_bytes {
         return Err(SceneError::TooLarge {
             pointer: "/buffers".to_owned(),
@@ -110,7 +115,11 @@ fn load_one(
             if bin.len() < declared {
                 return Err(SceneError::invalid(
                     &def.ptr,
-                    format!("BIN chunk holds {} bytes, byteLength declares {}", bin.len(), def.byte_length),
+                    format!(
+                        "BIN chunk holds {} bytes, byteLength declares {}",
+                        bin.len(),
+                        def.byte_length
+                    ),
                 ));
             }
             if bin.len() - declared > 3 {
@@ -136,14 +145,18 @@ fn load_one(
                     format!("non-relative URI {u:?}: only data URIs and relative files are loaded"),
                 ));
             }
-            warnings.push(format!("{uri_ptr}: unused buffer with non-relative URI {u:?} not fetched"));
+            warnings.push(format!(
+                "{uri_ptr}: unused buffer with non-relative URI {u:?} not fetched"
+            ));
             return Ok(None);
         }
         Some(Uri::Relative(rel)) => {
             let Some(base) = source.base else {
                 return Err(SceneError::invalid(
                     uri_ptr,
-                    format!("external file {rel:?} cannot be resolved for in-memory input (no base folder)"),
+                    format!(
+                        "external file {rel:?} cannot be resolved for in-memory input (no base folder)"
+                    ),
                 ));
             };
             let path = uri::resolve(base, rel).map_err(|r| SceneError::invalid(&uri_ptr, r))?;
@@ -155,7 +168,11 @@ fn load_one(
                 if meta.len() < def.byte_length {
                     return Err(SceneError::invalid(
                         &def.ptr,
-                        format!("file holds {} bytes, byteLength declares {}", meta.len(), def.byte_length),
+                        format!(
+                            "file holds {} bytes, byteLength declares {}",
+                            meta.len(),
+                            def.byte_length
+                        ),
                     ));
                 }
                 return Ok(None);
@@ -183,7 +200,11 @@ fn load_one(
     if data.len() < declared {
         return Err(SceneError::invalid(
             &def.ptr,
-            format!("data holds {} bytes, byteLength declares {}", data.len(), def.byte_length),
+            format!(
+                "data holds {} bytes, byteLength declares {}",
+                data.len(),
+                def.byte_length
+            ),
         ));
     }
     if data.len() > declared {

@@ -2,8 +2,8 @@
 
 use glam::{Mat4, Vec4};
 
-use crate::json::Obj;
 use crate::SceneError;
+use crate::json::Obj;
 
 /// A camera's projection, with the parameters glTF stores (not a matrix: the aspect ratio and
 /// the infinite far plane are decisions for the renderer).
@@ -124,7 +124,10 @@ impl Projection {
             "orthographic" => {
                 let ptr = obj.at("orthographic");
                 let o = ortho.ok_or_else(|| {
-                    SceneError::invalid(obj.ptr, "type is orthographic but 'orthographic' is missing")
+                    SceneError::invalid(
+                        obj.ptr,
+                        "type is orthographic but 'orthographic' is missing",
+                    )
                 })?;
                 let o = crate::json::as_obj(o, &ptr)?;
                 let xmag = o.req_f32("xmag")?;

@@ -10,23 +10,23 @@ use std::path::Path;
 use std::sync::Arc;
 
 use barytex_texture::load::ColorSpace;
-use gltf::json::Value;
 use glam::{Mat4, Vec3};
+use gltf::json::Value;
 
 use crate::accessor::{AccessorDef, Reader, ViewDef};
 use crate::animation::{AnimationContext, KeyframeChecks};
-use crate::skin::SkinDef;
 use crate::buffer::{self, BufferDef, Source};
 use crate::camera::{Projection, SceneCamera};
 use crate::image::ImageDef;
-use crate::json::{as_obj, child, Obj};
+use crate::json::{Obj, as_obj, child};
 use crate::light::{Light, SceneLight};
 use crate::material::Material;
 use crate::mesh::{Mesh, MeshContext, MeshDef};
-use crate::node::{check_forest, NodeDef, NodeRefs};
+use crate::node::{NodeDef, NodeRefs, check_forest};
 use crate::sampler::Sampler;
 use crate::scene::{MeshInstance, Scene, SceneImage, SceneStats, Texture};
-use crate::{glb, LoadOptions, SceneError};
+use crate::skin::SkinDef;
+use crate::{LoadOptions, SceneError, glb};
 
 /// Extensions this loader implements (and so may appear in `extensionsRequired`).
 const SUPPORTED_EXTENSIONS: [&str; 4] = [
@@ -56,17 +56,24 @@ pub(crate) fn load(
     let (json, bin, is_glb) = if force_glb || glb::is_glb(bytes) {
         let g = glb::parse(bytes)?;
         if g.trailing_bytes > 0 {
-            warnings.push(format!("{} bytes after the GLB's declared length ignored", g.trailing_bytes));
+            warnings.push(format!(
+                "{} bytes after the GLB's declared length ignored",
+                g.trailing_bytes
+            ));
         }
         (g.json, g.bin, true)
     } else {
         (bytes, None, false)
     };
     if json.starts_with(&[0xEF, 0xBB, 0xBF]) {
-        return Err(SceneError::Json("the JSON starts with a byte-order mark".to_owned()));
+        return Err(SceneError::Json(
+            "the JSON starts with a byte-order mark".to_owned(),
+        ));
     }
-    let root: Value = gltf::json::deserialize::from_slice(json).map_err(|e| SceneError::Json(e.to_string()))?;
-    let root = as_obj(&root, "").map_err(|_| SceneError::Json("the root is not a JSON object".to_owned()))?;
+    let root: Value =
+        gltf::json::deserialize::from_slice(json).map_err(|e| SceneError::Json(e.to_string()))?;
+    let root = as_obj(&root, "")
+        .map_err(|_| SceneError::Json("the root is not a JSON object".to_owned()))?;
     crate::json::check_no_empty_arrays(root.value(), "", 0)?;
     let source = Source { base, bin, is_glb };
     Document::parse(root, source, options, &mut warnings)?.into_scene(source, options, warnings)
@@ -150,13 +157,20 @@ fn check_asset(root: Obj<'_>) -> Result<(), SceneError> {
         return Err(asset.error("version", format!("unsupported glTF major version {major}")));
     }
     if let Some(min) = asset.opt_str("minVersion")? {
-        let parsed = parse_version(min)
-            .ok_or_else(|| asset.error("minVersion", format!("minVersion {min:?} is not MAJOR.MINOR")))?;
+        let parsed = parse_version(min).ok_or_else(|| {
+            asset.error(
+                "minVersion",
+                format!("minVersion {min:?} is not MAJOR.MINOR"),
+            )
+        })?;
         if parsed > (major, minor) {
             return Err(asset.error("minVersion", "minVersion is greater than version"));
         }
         if parsed.0 != 2 || parsed.1 > 0 {
-            return Err(asset.error("minVersion", format!("glTF {min} is required, this loader reads 2.0")));
+            return Err(asset.error(
+                "minVersion",
+                format!("glTF {min} is required, this loader reads 2.0"),
+            ));
         }
     }
     Ok(())
@@ -193,7 +207,8 @@ impl Document {
         for (p, v) in objects(root, "buffers")? {
             buffers.push(BufferDef::parse(as_obj(v, &p)?, limits)?);
         }
-        if source.is_glb && source.bin.is_some() && buffers.first().is_none_or(|b| b.uri.is_some()) {
+        if source.is_glb && source.bin.is_some() && buffers.first().is_none_or(|b| b.uri.is_some())
+        {
             warnings.push("the GLB BIN chunk is not used by buffer 0".to_owned());
         }
         let lengths: Vec<u64> = buffers.iter().map(|b| b.byte_length).collect();
@@ -203,7 +218,12 @@ impl Document {
         }
         let mut accessors = Vec::new();
         for (p, v) in objects(root, "accessors")? {
-            accessors.push(AccessorDef::parse(as_obj(v, &p)?, &views, limits, warnings)?);
+            accessors.push(AccessorDef::parse(
+                as_obj(v, &p)?,
+                &views,
+                limits,
+                warnings,
+            )?);
         }
         let mut samplers = Vec::new();
         for (p, v) in objects(root, "samplers")? {
@@ -232,7 +252,8 @@ impl Document {
             }
             textures.push(Texture { image, sampler });
         }
-        let texture_info: Vec<(Option<usize>, Sampler)> = textures.iter().map(|t| (t.image, t.sampler)).collect();
+        let texture_info: Vec<(Option<usize>, Sampler)> =
+            textures.iter().map(|t| (t.image, t.sampler)).collect();
         let mut materials = Vec::new();
         for (p, v) in objects(root, "materials")? {
             materials.push(Material::parse(as_obj(v, &p)?, &texture_info, warnings)?);
@@ -240,14 +261,20 @@ impl Document {
         let mut cameras = Vec::new();
         for (p, v) in objects(root, "cameras")? {
             let c = as_obj(v, &p)?;
-            cameras.push((c.opt_str("name")?.map(str::to_owned), Projection::parse(c, warnings)?));
+            cameras.push((
+                c.opt_str("name")?.map(str::to_owned),
+                Projection::parse(c, warnings)?,
+            ));
         }
         let mut lights = Vec::new();
         if let Some(ext) = root.extension("KHR_lights_punctual")? {
             let eptr = "/extensions/KHR_lights_punctual";
             let ext = as_obj(ext, eptr)?;
             if ext.get("lights").is_none() {
-                return Err(SceneError::invalid(eptr, "required property 'lights' is missing"));
+                return Err(SceneError::invalid(
+                    eptr,
+                    "required property 'lights' is missing",
+                ));
             }
             for (p, v) in objects(ext, "lights")? {
                 lights.push(Light::parse(as_obj(v, &p)?, warnings)?);
@@ -278,7 +305,12 @@ impl Document {
         }
         let mut skins = Vec::new();
         for (p, v) in objects(root, "skins")? {
-            skins.push(SkinDef::parse(as_obj(v, &p)?, node_values.len(), &accessors, &views)?);
+            skins.push(SkinDef::parse(
+                as_obj(v, &p)?,
+                node_values.len(),
+                &accessors,
+                &views,
+            )?);
         }
         let refs = NodeRefs {
             nodes: node_values.len(),
@@ -287,7 +319,10 @@ impl Document {
             skins: skins.len(),
             lights: lights.len(),
         };
-        let mesh_targets: Vec<(usize, bool)> = meshes.iter().map(|m| (m.target_count, m.has_skin_attributes)).collect();
+        let mesh_targets: Vec<(usize, bool)> = meshes
+            .iter()
+            .map(|m| (m.target_count, m.has_skin_attributes))
+            .collect();
         let mut nodes = Vec::with_capacity(node_values.len());
         for (p, v) in &node_values {
             nodes.push(NodeDef::parse(as_obj(v, p)?, &refs, &mesh_targets)?);
@@ -296,15 +331,23 @@ impl Document {
         let mut scenes = Vec::new();
         for (p, v) in objects(root, "scenes")? {
             let s = as_obj(v, &p)?;
-            let roots = s.opt_indices("nodes", nodes.len(), "node")?.unwrap_or_default();
+            let roots = s
+                .opt_indices("nodes", nodes.len(), "node")?
+                .unwrap_or_default();
             let mut seen = BTreeSet::new();
             for (k, &n) in roots.iter().enumerate() {
                 let ptr = child(&s.at("nodes"), &k.to_string());
                 if parents.get(n).copied().flatten().is_some() {
-                    return Err(SceneError::invalid(ptr, format!("node {n} is not a root node")));
+                    return Err(SceneError::invalid(
+                        ptr,
+                        format!("node {n} is not a root node"),
+                    ));
                 }
                 if !seen.insert(n) {
-                    return Err(SceneError::invalid(ptr, format!("node {n} is listed twice")));
+                    return Err(SceneError::invalid(
+                        ptr,
+                        format!("node {n} is listed twice"),
+                    ));
                 }
             }
             scenes.push((s.opt_str("name")?.map(str::to_owned), roots));
@@ -319,7 +362,14 @@ impl Document {
         }
         let node_info: Vec<(bool, usize)> = nodes
             .iter()
-            .map(|n| (n.has_matrix, n.mesh.and_then(|m| mesh_targets.get(m)).map_or(0, |&(t, _)| t)))
+            .map(|n| {
+                (
+                    n.has_matrix,
+                    n.mesh
+                        .and_then(|m| mesh_targets.get(m))
+                        .map_or(0, |&(t, _)| t),
+                )
+            })
             .collect();
         let actx = AnimationContext {
             accessors: &accessors,
@@ -416,8 +466,17 @@ impl Document {
 
         // The scene: the requested one, the default one, the first, or every root node.
         let scene_index = match options.scene {
-            Some(i) => Some(crate::json::check_index(i as u64, self.scenes.len(), "scene", "/scenes")?),
-            None => self.default_scene.or(if self.scenes.is_empty() { None } else { Some(0) }),
+            Some(i) => Some(crate::json::check_index(
+                i as u64,
+                self.scenes.len(),
+                "scene",
+                "/scenes",
+            )?),
+            None => self.default_scene.or(if self.scenes.is_empty() {
+                None
+            } else {
+                Some(0)
+            }),
         };
         let (name, roots) = match scene_index.and_then(|i| self.scenes.get(i)) {
             Some((name, roots)) => (name.clone(), roots.clone()),
@@ -436,7 +495,8 @@ impl Document {
         let mut placed_meshes: Vec<(usize, usize, Mat4)> = Vec::new();
         let mut cameras = Vec::new();
         let mut lights = Vec::new();
-        let mut stack: Vec<(usize, Mat4)> = roots.iter().rev().map(|&n| (n, Mat4::IDENTITY)).collect();
+        let mut stack: Vec<(usize, Mat4)> =
+            roots.iter().rev().map(|&n| (n, Mat4::IDENTITY)).collect();
         while let Some((n, parent_world)) = stack.pop() {
             let node = self
                 .nodes
@@ -502,12 +562,17 @@ impl Document {
         }
         let mut decoded: Vec<Option<Arc<Mesh>>> = vec![None; self.meshes.len()];
         for &m in &used_meshes {
-            let Some(def) = self.meshes.get(m) else { continue };
+            let Some(def) = self.meshes.get(m) else {
+                continue;
+            };
             let mut primitives = Vec::new();
             for p in &def.primitives {
                 if !primitive_readable(p) {
                     stats.primitives_skipped_other += 1;
-                    warnings.push(format!("{}: primitive skipped, its buffers have no data", p.ptr));
+                    warnings.push(format!(
+                        "{}: primitive skipped, its buffers have no data",
+                        p.ptr
+                    ));
                     continue;
                 }
                 match p.decode(&self.accessors, &reader)? {
@@ -519,7 +584,10 @@ impl Document {
                     None => {
                         if p.topology.is_some_and(|t| !t.is_triangles()) {
                             stats.primitives_skipped_non_triangle += 1;
-                            warnings.push(format!("{}: {:?} primitive skipped (not triangles)", p.ptr, p.topology));
+                            warnings.push(format!(
+                                "{}: {:?} primitive skipped (not triangles)",
+                                p.ptr, p.topology
+                            ));
                         } else {
                             stats.primitives_skipped_other += 1;
                             warnings.push(format!("{}: primitive without POSITION skipped", p.ptr));
@@ -539,7 +607,9 @@ impl Document {
         stats.meshes_unused = self.meshes.len() - used_meshes.len();
         let mut instances = Vec::with_capacity(placed_meshes.len());
         for (n, m, world) in placed_meshes {
-            let Some(mesh) = decoded.get(m).cloned().flatten() else { continue };
+            let Some(mesh) = decoded.get(m).cloned().flatten() else {
+                continue;
+            };
             let instance = MeshInstance {
                 node: n,
                 node_name: self.nodes.get(n).and_then(|x| x.name.clone()),

@@ -5,8 +5,8 @@
 
 use gltf::json::Value;
 
-use crate::json::child;
 use crate::SceneError;
+use crate::json::child;
 
 /// The kind of glTF object a JSON pointer designates, as far as extension placement cares.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -61,7 +61,12 @@ pub(crate) fn check(root: &Value, used: &[String]) -> Result<(), SceneError> {
     walk(root, "", &mut tokens, used)
 }
 
-fn walk<'a>(value: &'a Value, ptr: &str, tokens: &mut Vec<&'a str>, used: &[String]) -> Result<(), SceneError> {
+fn walk<'a>(
+    value: &'a Value,
+    ptr: &str,
+    tokens: &mut Vec<&'a str>,
+    used: &[String],
+) -> Result<(), SceneError> {
     if tokens.len() > 128 {
         return Err(SceneError::invalid(ptr, "JSON nested too deeply"));
     }
@@ -73,19 +78,31 @@ fn walk<'a>(value: &'a Value, ptr: &str, tokens: &mut Vec<&'a str>, used: &[Stri
                     "extras" => {}
                     "extensions" => {
                         let Value::Object(exts) = item else {
-                            return Err(SceneError::invalid(item_ptr, "'extensions' must be an object"));
+                            return Err(SceneError::invalid(
+                                item_ptr,
+                                "'extensions' must be an object",
+                            ));
                         };
                         let kind = classify(tokens);
                         for (name, ext) in exts {
                             let ext_ptr = child(&item_ptr, name);
                             if !ext.is_object() {
-                                return Err(SceneError::invalid(ext_ptr, "an extension must be a JSON object"));
+                                return Err(SceneError::invalid(
+                                    ext_ptr,
+                                    "an extension must be a JSON object",
+                                ));
                             }
                             if !used.iter().any(|u| u == name) {
-                                return Err(SceneError::invalid(ext_ptr, format!("{name} is not declared in extensionsUsed")));
+                                return Err(SceneError::invalid(
+                                    ext_ptr,
+                                    format!("{name} is not declared in extensionsUsed"),
+                                ));
                             }
                             if placement(name).is_some_and(|kinds| !kinds.contains(&kind)) {
-                                return Err(SceneError::invalid(ext_ptr, format!("{name} does not extend this kind of object")));
+                                return Err(SceneError::invalid(
+                                    ext_ptr,
+                                    format!("{name} does not extend this kind of object"),
+                                ));
                             }
                             tokens.push("extensions");
                             tokens.push(name);
@@ -121,8 +138,14 @@ mod tests {
 
     #[test]
     fn placement_by_pointer() {
-        assert_eq!(classify(&["materials", "#", "pbrMetallicRoughness", "baseColorTexture"]), Kind::TextureInfo);
-        assert_eq!(classify(&["meshes", "#", "primitives", "#"]), Kind::Primitive);
+        assert_eq!(
+            classify(&["materials", "#", "pbrMetallicRoughness", "baseColorTexture"]),
+            Kind::TextureInfo
+        );
+        assert_eq!(
+            classify(&["meshes", "#", "primitives", "#"]),
+            Kind::Primitive
+        );
         assert_eq!(classify(&[]), Kind::Root);
         assert_eq!(classify(&["nodes", "#"]), Kind::Node);
     }

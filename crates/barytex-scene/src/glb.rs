@@ -51,11 +51,15 @@ pub(crate) fn parse(bytes: &[u8]) -> Result<Glb<'_>, SceneError> {
     }
     let magic = read_u32(bytes, 0).ok_or_else(|| err("unexpected end of header"))?;
     if magic != MAGIC {
-        return Err(err(format!("invalid magic 0x{magic:08x}, expected \"glTF\"")));
+        return Err(err(format!(
+            "invalid magic 0x{magic:08x}, expected \"glTF\""
+        )));
     }
     let version = read_u32(bytes, 4).ok_or_else(|| err("unexpected end of header"))?;
     if version != 2 {
-        return Err(err(format!("unsupported GLB version {version}, expected 2")));
+        return Err(err(format!(
+            "unsupported GLB version {version}, expected 2"
+        )));
     }
     let length = read_u32(bytes, 8).ok_or_else(|| err("unexpected end of header"))?;
     let length = usize::try_from(length).map_err(|_| err("total length does not fit memory"))?;
@@ -73,7 +77,9 @@ pub(crate) fn parse(bytes: &[u8]) -> Result<Glb<'_>, SceneError> {
     if length % 4 != 0 {
         return Err(err(format!("total length {length} is not a multiple of 4")));
     }
-    let data = bytes.get(..length).ok_or_else(|| err("total length mismatch"))?;
+    let data = bytes
+        .get(..length)
+        .ok_or_else(|| err("total length mismatch"))?;
     let mut at = HEADER_LEN;
     let mut json: Option<&[u8]> = None;
     let mut bin: Option<&[u8]> = None;
@@ -101,7 +107,9 @@ pub(crate) fn parse(bytes: &[u8]) -> Result<Glb<'_>, SceneError> {
                     "chunk {index} ({chunk_len} bytes at byte {start}) runs past the total length {length}"
                 ))
             })?;
-        let chunk = data.get(start..end).ok_or_else(|| err("chunk out of range"))?;
+        let chunk = data
+            .get(start..end)
+            .ok_or_else(|| err("chunk out of range"))?;
         match (index, chunk_type) {
             (0, CHUNK_JSON) => {
                 if chunk.is_empty() {
@@ -158,7 +166,13 @@ mod tests {
     fn accepts_json_and_bin() {
         let bytes = glb(&[(CHUNK_JSON, b"{}  "), (CHUNK_BIN, &[1, 2, 3, 4])]);
         let parsed = parse(&bytes);
-        assert!(matches!(parsed, Ok(Glb { bin: Some([1, 2, 3, 4]), .. })));
+        assert!(matches!(
+            parsed,
+            Ok(Glb {
+                bin: Some([1, 2, 3, 4]),
+                ..
+            })
+        ));
     }
 
     #[test]

@@ -67,7 +67,10 @@ impl ImageDef {
                     }
                     if let Some(m) = &mime {
                         if m != media_type {
-                            return Err(obj.error("mimeType", "mimeType differs from the data URI's media type"));
+                            return Err(obj.error(
+                                "mimeType",
+                                "mimeType differs from the data URI's media type",
+                            ));
                         }
                     }
                     mime = Some(media_type.clone());
@@ -76,10 +79,15 @@ impl ImageDef {
             }
             (None, Some(v)) => {
                 if mime.is_none() {
-                    return Err(obj.error("bufferView", "an image in a bufferView requires 'mimeType'"));
+                    return Err(
+                        obj.error("bufferView", "an image in a bufferView requires 'mimeType'")
+                    );
                 }
                 if views.get(v).is_some_and(|v| v.stride.is_some()) {
-                    return Err(obj.error("bufferView", "an image's bufferView must not define byteStride"));
+                    return Err(obj.error(
+                        "bufferView",
+                        "an image's bufferView must not define byteStride",
+                    ));
                 }
                 ImageSource::View(v)
             }
@@ -198,7 +206,9 @@ fn check_png(b: &[u8]) -> Result<(), String> {
     let mut first = true;
     loop {
         let len = be32(b, at).ok_or("unexpected end of PNG stream")?;
-        let ty = b.get(at + 4..at + 8).ok_or("unexpected end of PNG stream")?;
+        let ty = b
+            .get(at + 4..at + 8)
+            .ok_or("unexpected end of PNG stream")?;
         if first && ty != b"IHDR" {
             return Err("PNG does not start with IHDR".to_owned());
         }

@@ -142,7 +142,10 @@ impl<'a> Obj<'a> {
     }
 
     /// An optional array of exactly `N` finite numbers.
-    pub(crate) fn opt_f32s<const N: usize>(&self, key: &str) -> Result<Option<[f32; N]>, SceneError> {
+    pub(crate) fn opt_f32s<const N: usize>(
+        &self,
+        key: &str,
+    ) -> Result<Option<[f32; N]>, SceneError> {
         let Some(v) = self.get(key) else {
             return Ok(None);
         };
@@ -241,7 +244,12 @@ impl<'a> Obj<'a> {
 }
 
 /// Checks an index against the length of the array it points into.
-pub(crate) fn check_index(index: u64, len: usize, what: &str, ptr: &str) -> Result<usize, SceneError> {
+pub(crate) fn check_index(
+    index: u64,
+    len: usize,
+    what: &str,
+    ptr: &str,
+) -> Result<usize, SceneError> {
     usize::try_from(index)
         .ok()
         .filter(|&i| i < len)
@@ -255,7 +263,11 @@ pub(crate) fn check_index(index: u64, len: usize, what: &str, ptr: &str) -> Resu
 
 /// Walks the tree refusing empty arrays, which the glTF schema forbids everywhere
 /// (`minItems: 1`), except inside `extras` and inside extensions this crate does not read.
-pub(crate) fn check_no_empty_arrays(value: &Value, ptr: &str, depth: usize) -> Result<(), SceneError> {
+pub(crate) fn check_no_empty_arrays(
+    value: &Value,
+    ptr: &str,
+    depth: usize,
+) -> Result<(), SceneError> {
     const KNOWN_EXTENSIONS: [&str; 4] = [
         "KHR_lights_punctual",
         "KHR_texture_transform",
@@ -268,7 +280,10 @@ pub(crate) fn check_no_empty_arrays(value: &Value, ptr: &str, depth: usize) -> R
     match value {
         Value::Array(items) => {
             if items.is_empty() {
-                return Err(SceneError::invalid(ptr, "an empty array (arrays must have at least one item)"));
+                return Err(SceneError::invalid(
+                    ptr,
+                    "an empty array (arrays must have at least one item)",
+                ));
             }
             for (i, item) in items.iter().enumerate() {
                 check_no_empty_arrays(item, &child(ptr, &i.to_string()), depth + 1)?;

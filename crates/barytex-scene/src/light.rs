@@ -3,8 +3,8 @@
 
 use glam::{Mat4, Vec3};
 
-use crate::json::Obj;
 use crate::SceneError;
+use crate::json::Obj;
 
 /// The kind of a punctual light.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -41,7 +41,10 @@ pub struct Light {
 impl Light {
     /// Reads `/extensions/KHR_lights_punctual/lights/i`. Returns `None` (with a warning) for an
     /// unknown light type, which the extension allows future versions to add.
-    pub(crate) fn parse(obj: Obj<'_>, warnings: &mut Vec<String>) -> Result<Option<Self>, SceneError> {
+    pub(crate) fn parse(
+        obj: Obj<'_>,
+        warnings: &mut Vec<String>,
+    ) -> Result<Option<Self>, SceneError> {
         let ty = obj.req_str("type")?;
         let color = obj.opt_f32s::<3>("color")?.map_or(Vec3::ONE, Vec3::from);
         if color.min_element() < 0.0 {
@@ -82,7 +85,10 @@ impl Light {
                 }
             }
             other => {
-                warnings.push(format!("{}: unknown light type {other:?}, ignored", obj.ptr));
+                warnings.push(format!(
+                    "{}: unknown light type {other:?}, ignored",
+                    obj.ptr
+                ));
                 return Ok(None);
             }
         };

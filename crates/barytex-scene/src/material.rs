@@ -4,9 +4,9 @@
 
 use glam::{Mat3, Vec2, Vec3, Vec4};
 
-use crate::json::{as_obj, Obj};
-use crate::sampler::Sampler;
 use crate::SceneError;
+use crate::json::{Obj, as_obj};
+use crate::sampler::Sampler;
 
 /// How alpha is interpreted (`alphaMode`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -177,7 +177,10 @@ impl Material {
             },
             Some("BLEND") => AlphaMode::Blend,
             Some(other) => {
-                warnings.push(format!("{}: unknown alphaMode {other:?}, treated as OPAQUE", obj.at("alphaMode")));
+                warnings.push(format!(
+                    "{}: unknown alphaMode {other:?}, treated as OPAQUE",
+                    obj.at("alphaMode")
+                ));
                 AlphaMode::Opaque
             }
         };
@@ -201,26 +204,60 @@ enum Range {
 /// The numeric bounds of the Khronos PBR extensions. They are not rendered by this crate, but
 /// out-of-range values mark a broken file (the validator's VALUE_NOT_IN_RANGE).
 const PBR_EXTENSION_RANGES: &[(&str, &str, Range)] = &[
-    ("KHR_materials_anisotropy", "anisotropyStrength", Range::Unit),
+    (
+        "KHR_materials_anisotropy",
+        "anisotropyStrength",
+        Range::Unit,
+    ),
     ("KHR_materials_clearcoat", "clearcoatFactor", Range::Unit),
-    ("KHR_materials_clearcoat", "clearcoatRoughnessFactor", Range::Unit),
+    (
+        "KHR_materials_clearcoat",
+        "clearcoatRoughnessFactor",
+        Range::Unit,
+    ),
     ("KHR_materials_dispersion", "dispersion", Range::NonNegative),
-    ("KHR_materials_emissive_strength", "emissiveStrength", Range::NonNegative),
+    (
+        "KHR_materials_emissive_strength",
+        "emissiveStrength",
+        Range::NonNegative,
+    ),
     ("KHR_materials_ior", "ior", Range::Ior),
-    ("KHR_materials_iridescence", "iridescenceFactor", Range::Unit),
+    (
+        "KHR_materials_iridescence",
+        "iridescenceFactor",
+        Range::Unit,
+    ),
     ("KHR_materials_sheen", "sheenRoughnessFactor", Range::Unit),
     ("KHR_materials_sheen", "sheenColorFactor", Range::Unit),
     ("KHR_materials_specular", "specularFactor", Range::Unit),
-    ("KHR_materials_specular", "specularColorFactor", Range::NonNegative),
-    ("KHR_materials_transmission", "transmissionFactor", Range::Unit),
-    ("KHR_materials_volume", "thicknessFactor", Range::NonNegative),
-    ("KHR_materials_volume", "attenuationDistance", Range::Positive),
+    (
+        "KHR_materials_specular",
+        "specularColorFactor",
+        Range::NonNegative,
+    ),
+    (
+        "KHR_materials_transmission",
+        "transmissionFactor",
+        Range::Unit,
+    ),
+    (
+        "KHR_materials_volume",
+        "thicknessFactor",
+        Range::NonNegative,
+    ),
+    (
+        "KHR_materials_volume",
+        "attenuationDistance",
+        Range::Positive,
+    ),
     ("KHR_materials_volume", "attenuationColor", Range::Unit),
 ];
 
 fn check_pbr_extension_ranges(obj: Obj<'_>) -> Result<(), SceneError> {
     for &(ext, key, range) in PBR_EXTENSION_RANGES {
-        let Some(e) = obj.extension(ext)? else { continue };
+        let Some(e) = obj.extension(ext)? else {
+            continue;
+        };
         let ptr = crate::json::child(&obj.at("extensions"), ext);
         let e = as_obj(e, &ptr)?;
         let values: Vec<f32> = match e.get(key) {
@@ -228,7 +265,9 @@ fn check_pbr_extension_ranges(obj: Obj<'_>) -> Result<(), SceneError> {
             Some(gltf::json::Value::Array(items)) => items
                 .iter()
                 .enumerate()
-                .map(|(i, v)| crate::json::as_f32(v, &crate::json::child(&e.at(key), &i.to_string())))
+                .map(|(i, v)| {
+                    crate::json::as_f32(v, &crate::json::child(&e.at(key), &i.to_string()))
+                })
                 .collect::<Result<_, _>>()?,
             Some(v) => vec![crate::json::as_f32(v, &e.at(key))?],
         };
@@ -283,7 +322,8 @@ fn texture_ref(
         let scale = tt.opt_f32s::<2>("scale")?.map_or(Vec2::ONE, Vec2::from);
         transform = texture_transform_matrix(offset, rotation, scale);
         if let Some(tc) = tt.opt_u64("texCoord")? {
-            tex_coord = u32::try_from(tc).map_err(|_| tt.error("texCoord", "texCoord out of range"))?;
+            tex_coord =
+                u32::try_from(tc).map_err(|_| tt.error("texCoord", "texCoord out of range"))?;
         }
     }
     Ok(Some(TextureRef {

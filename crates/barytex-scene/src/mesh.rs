@@ -6,11 +6,11 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use glam::{Vec2, Vec3, Vec4};
 
-use crate::accessor::{AccessorDef, ComponentType, ElementType, Reader, ViewDef};
-use crate::json::{as_obj, child, Obj};
-use crate::material::Material;
-use crate::topology::{triangulate, Topology};
 use crate::SceneError;
+use crate::accessor::{AccessorDef, ComponentType, ElementType, Reader, ViewDef};
+use crate::json::{Obj, as_obj, child};
+use crate::material::Material;
+use crate::topology::{Topology, triangulate};
 
 /// A decoded triangle primitive.
 #[derive(Clone, Debug, PartialEq)]
@@ -95,14 +95,15 @@ fn semantic_ok(name: &str) -> Option<(&str, Option<u32>)> {
     if !matches!(base, "TEXCOORD" | "COLOR" | "JOINTS" | "WEIGHTS") {
         return None;
     }
-    if n.is_empty() || !n.bytes().all(|c| c.is_ascii_digit()) || (n.len() > 1 && n.starts_with('0')) {
+    if n.is_empty() || !n.bytes().all(|c| c.is_ascii_digit()) || (n.len() > 1 && n.starts_with('0'))
+    {
         return None;
     }
     Some((base, Some(n.parse().ok()?)))
 }
 
 fn format_ok(base: &str, acc: &AccessorDef, quantization: bool) -> Result<(), String> {
-    use ComponentType::{F32, I16, I8, U16, U8};
+    use ComponentType::{F32, I8, I16, U8, U16};
     use ElementType::{Vec2, Vec3, Vec4};
     let Some(layout) = acc.layout else {
         return Err("accessor has an unknown type or componentType".to_owned());
@@ -121,18 +122,28 @@ fn format_ok(base: &str, acc: &AccessorDef, quantization: bool) -> Result<(), St
         "COLOR" => matches!(e, Vec3 | Vec4) && (c == F32 || (n && matches!(c, U8 | U16))),
         "JOINTS" => e == Vec4 && !n && matches!(c, U8 | U16),
         "WEIGHTS" => {
-            e == Vec4 && (c == F32 || (n && matches!(c, U8 | U16)) || (quantization && n && matches!(c, I8 | I16)))
+            e == Vec4
+                && (c == F32
+                    || (n && matches!(c, U8 | U16))
+                    || (quantization && n && matches!(c, I8 | I16)))
         }
         _ => c != ComponentType::U32,
     };
     if ok {
         Ok(())
     } else {
-        Err(format!("{base} does not allow {e:?} of {c:?} (normalized: {n})"))
+        Err(format!(
+            "{base} does not allow {e:?} of {c:?} (normalized: {n})"
+        ))
     }
 }
 
-fn claim_view(ctx: &mut MeshContext<'_>, view: usize, usage: ViewUse, ptr: &str) -> Result<(), SceneError> {
+fn claim_view(
+    ctx: &mut MeshContext<'_>,
+    view: usize,
+    usage: ViewUse,
+    ptr: &str,
+) -> Result<(), SceneError> {
     let declared = ctx.views.get(view).and_then(|v| v.target);
     let conflict_target = match usage {
         ViewUse::Vertex => declared == Some(34963),
@@ -158,7 +169,11 @@ fn claim_view(ctx: &mut MeshContext<'_>, view: usize, usage: ViewUse, ptr: &str)
     Ok(())
 }
 
-fn check_vertex_accessor(ctx: &mut MeshContext<'_>, acc: &AccessorDef, ptr: &str) -> Result<(), SceneError> {
+fn check_vertex_accessor(
+    ctx: &mut MeshContext<'_>,
+    acc: &AccessorDef,
+    ptr: &str,
+) -> Result<(), SceneError> {
     let Some(view) = acc.view else {
         return Ok(());
     };
@@ -179,10 +194,14 @@ fn check_vertex_accessor(ctx: &mut MeshContext<'_>, acc: &AccessorDef, ptr: &str
 }
 
 impl MeshDef {
-    pub(crate) fn parse(obj: Obj<'_>, ctx: &mut MeshContext<'_>, warnings: &mut Vec<String>) -> Result<Self, SceneError> {
-        let prims = obj
-            .opt_array("primitives")?
-            .ok_or_else(|| SceneError::invalid(obj.ptr, "required property 'primitives' is missing"))?;
+    pub(crate) fn parse(
+        obj: Obj<'_>,
+        ctx: &mut MeshContext<'_>,
+        warnings: &mut Vec<String>,
+    ) -> Result<Self, SceneError> {
+        let prims = obj.opt_array("primitives")?.ok_or_else(|| {
+            SceneError::invalid(obj.ptr, "required property 'primitives' is missing")
+        })?;
         let pptr = obj.at("primitives");
         let mut primitives = Vec::with_capacity(prims.len());
         let mut target_counts = BTreeSet::new();
@@ -238,8 +257,9 @@ fn parse_primitive(
         }
         for (name, v) in map {
             let ptr = child(&aptr, name);
-            let (base, set) = semantic_ok(name)
-                .ok_or_else(|| SceneError::invalid(&ptr, format!("invalid attribute semantic {name:?}")))?;
+            let (base, set) = semantic_ok(name).ok_or_else(|| {
+                SceneError::invalid(&ptr, format!("invalid attribute semantic {name:?}"))
+            })?;
             if let Some(n) = set {
                 sets.entry(base).or_default().insert(n);
             }
@@ -255,23 +275,33 @@ fn parse_primitive(
                 .ok_or_else(|| SceneError::invalid(&ptr, "unresolved accessor"))?;
             format_ok(base, acc, ctx.quantization).map_err(|r| SceneError::invalid(&ptr, r))?;
             if base == "POSITION" && !acc.has_bounds {
-                return Err(SceneError::invalid(&ptr, "the POSITION accessor must define min and max"));
+                return Err(SceneError::invalid(
+                    &ptr,
+                    "the POSITION accessor must define min and max",
+                ));
             }
             match vertex_count {
                 Some(c) if c != acc.count => {
                     return Err(SceneError::invalid(
                         &ptr,
-                        format!("accessor count {} differs from the other attributes' {c}", acc.count),
+                        format!(
+                            "accessor count {} differs from the other attributes' {c}",
+                            acc.count
+                        ),
                     ));
                 }
                 _ => vertex_count = Some(acc.count),
             }
             check_vertex_accessor(ctx, acc, &ptr)?;
             if let Some(view) = acc.view {
-                if ctx.views.get(view).is_some_and(|v| v.stride.is_none()) && !unstrided_views.insert(view) {
+                if ctx.views.get(view).is_some_and(|v| v.stride.is_none())
+                    && !unstrided_views.insert(view)
+                {
                     return Err(SceneError::invalid(
                         &ptr,
-                        format!("attributes share bufferView {view}, which must then define byteStride"),
+                        format!(
+                            "attributes share bufferView {view}, which must then define byteStride"
+                        ),
                     ));
                 }
             }
@@ -281,7 +311,11 @@ fn parse_primitive(
         return Err(SceneError::invalid(&aptr, "attributes must be an object"));
     }
     for (base, set) in &sets {
-        if set.iter().copied().ne(0..u32::try_from(set.len()).unwrap_or(u32::MAX)) {
+        if set
+            .iter()
+            .copied()
+            .ne(0..u32::try_from(set.len()).unwrap_or(u32::MAX))
+        {
             return Err(SceneError::invalid(
                 &aptr,
                 format!("{base}_n sets must be numbered 0, 1, 2, … without gaps"),
@@ -289,15 +323,24 @@ fn parse_primitive(
         }
     }
     if sets.get("JOINTS") != sets.get("WEIGHTS") {
-        return Err(SceneError::invalid(&aptr, "JOINTS_n and WEIGHTS_n sets must match"));
+        return Err(SceneError::invalid(
+            &aptr,
+            "JOINTS_n and WEIGHTS_n sets must match",
+        ));
     }
     let indices = p.opt_index("indices", ctx.accessors.len(), "accessor")?;
     if let Some(i) = indices {
         let ptr = p.at("indices");
-        let acc = ctx.accessors.get(i).ok_or_else(|| SceneError::invalid(&ptr, "unresolved accessor"))?;
+        let acc = ctx
+            .accessors
+            .get(i)
+            .ok_or_else(|| SceneError::invalid(&ptr, "unresolved accessor"))?;
         let layout = acc.layout()?;
         if layout.element != ElementType::Scalar
-            || !matches!(layout.component, ComponentType::U8 | ComponentType::U16 | ComponentType::U32)
+            || !matches!(
+                layout.component,
+                ComponentType::U8 | ComponentType::U16 | ComponentType::U32
+            )
             || acc.normalized
         {
             return Err(SceneError::invalid(
@@ -307,7 +350,10 @@ fn parse_primitive(
         }
         if let Some(view) = acc.view {
             if ctx.views.get(view).is_some_and(|v| v.stride.is_some()) {
-                return Err(SceneError::invalid(&ptr, "the indices' bufferView must not define byteStride"));
+                return Err(SceneError::invalid(
+                    &ptr,
+                    "the indices' bufferView must not define byteStride",
+                ));
             }
             claim_view(ctx, view, ViewUse::Index, &ptr)?;
         }
@@ -317,7 +363,10 @@ fn parse_primitive(
     let mode = p.opt_u64("mode")?.unwrap_or(4);
     let topology = Topology::from_gl(mode);
     if topology.is_none() {
-        warnings.push(format!("{}: unknown mode {mode}, primitive skipped", p.at("mode")));
+        warnings.push(format!(
+            "{}: unknown mode {mode}, primitive skipped",
+            p.at("mode")
+        ));
     }
     if let Some(m) = material.and_then(|m| ctx.materials.get(m)) {
         let have = sets.get("TEXCOORD").map_or(0, BTreeSet::len);
@@ -325,7 +374,10 @@ fn parse_primitive(
             if usize::try_from(t.tex_coord).unwrap_or(usize::MAX) >= have {
                 return Err(SceneError::invalid(
                     p.at("material"),
-                    format!("the material samples TEXCOORD_{} but the primitive has {have} sets", t.tex_coord),
+                    format!(
+                        "the material samples TEXCOORD_{} but the primitive has {have} sets",
+                        t.tex_coord
+                    ),
                 ));
             }
         }
@@ -347,14 +399,26 @@ fn parse_primitive(
                         &aptr,
                     )?;
                     if !attributes.contains_key(name) {
-                        return Err(SceneError::invalid(&aptr, format!("morph target {name} has no base attribute")));
+                        return Err(SceneError::invalid(
+                            &aptr,
+                            format!("morph target {name} has no base attribute"),
+                        ));
                     }
-                    let acc = ctx.accessors.get(index).ok_or_else(|| SceneError::invalid(&aptr, "unresolved accessor"))?;
+                    let acc = ctx
+                        .accessors
+                        .get(index)
+                        .ok_or_else(|| SceneError::invalid(&aptr, "unresolved accessor"))?;
                     if vertex_count.is_some_and(|c| c != acc.count) {
-                        return Err(SceneError::invalid(&aptr, "morph target count differs from the base attributes'"));
+                        return Err(SceneError::invalid(
+                            &aptr,
+                            "morph target count differs from the base attributes'",
+                        ));
                     }
                     if name == "POSITION" && !acc.has_bounds {
-                        return Err(SceneError::invalid(&aptr, "a POSITION morph target must define min and max"));
+                        return Err(SceneError::invalid(
+                            &aptr,
+                            "a POSITION morph target must define min and max",
+                        ));
                     }
                     check_vertex_accessor(ctx, acc, &aptr)?;
                 }
@@ -377,10 +441,16 @@ fn parse_primitive(
 impl PrimitiveDef {
     /// Reads the index accessor (or `0..n`), checking every index against the vertex count and
     /// refusing primitive-restart values.
-    pub(crate) fn read_indices(&self, accessors: &[AccessorDef], reader: &Reader<'_>) -> Result<Vec<u32>, SceneError> {
+    pub(crate) fn read_indices(
+        &self,
+        accessors: &[AccessorDef],
+        reader: &Reader<'_>,
+    ) -> Result<Vec<u32>, SceneError> {
         let n = self.vertex_count.unwrap_or(0);
         match self.indices {
-            None => Ok((0..u32::try_from(n).map_err(|_| SceneError::invalid(&self.ptr, "too many vertices"))?).collect()),
+            None => Ok((0..u32::try_from(n)
+                .map_err(|_| SceneError::invalid(&self.ptr, "too many vertices"))?)
+                .collect()),
             Some(i) => {
                 let acc = accessors
                     .get(i)
@@ -411,7 +481,11 @@ impl PrimitiveDef {
     }
 
     /// Tangents' `w` must be exactly ±1 (the bitangent sign).
-    pub(crate) fn check_tangents(&self, accessors: &[AccessorDef], reader: &Reader<'_>) -> Result<(), SceneError> {
+    pub(crate) fn check_tangents(
+        &self,
+        accessors: &[AccessorDef],
+        reader: &Reader<'_>,
+    ) -> Result<(), SceneError> {
         let Some(acc) = self
             .attributes
             .get("TANGENT")
@@ -422,7 +496,10 @@ impl PrimitiveDef {
         };
         for (k, t) in reader.read_f32::<4>(acc)?.into_iter().enumerate() {
             if t[3] != 1.0 && t[3] != -1.0 {
-                return Err(SceneError::invalid(&acc.ptr, format!("tangent {k} has w = {}, not ±1", t[3])));
+                return Err(SceneError::invalid(
+                    &acc.ptr,
+                    format!("tangent {k} has w = {}, not ±1", t[3]),
+                ));
             }
         }
         Ok(())
@@ -446,22 +523,46 @@ impl PrimitiveDef {
                 .ok_or_else(|| SceneError::invalid(&self.ptr, "unresolved accessor"))
         };
         let vec3 = |i: usize| -> Result<Vec<Vec3>, SceneError> {
-            Ok(reader.read_f32::<3>(acc(i)?)?.into_iter().map(Vec3::from).collect())
+            Ok(reader
+                .read_f32::<3>(acc(i)?)?
+                .into_iter()
+                .map(Vec3::from)
+                .collect())
         };
         let vec2 = |i: usize| -> Result<Vec<Vec2>, SceneError> {
-            Ok(reader.read_f32::<2>(acc(i)?)?.into_iter().map(Vec2::from).collect())
+            Ok(reader
+                .read_f32::<2>(acc(i)?)?
+                .into_iter()
+                .map(Vec2::from)
+                .collect())
         };
         let positions = vec3(pos)?;
-        let normals = self.attributes.get("NORMAL").map(|&i| vec3(i)).transpose()?;
+        let normals = self
+            .attributes
+            .get("NORMAL")
+            .map(|&i| vec3(i))
+            .transpose()?;
         let tangents = self
             .attributes
             .get("TANGENT")
             .map(|&i| -> Result<Vec<Vec4>, SceneError> {
-                Ok(reader.read_f32::<4>(acc(i)?)?.into_iter().map(Vec4::from).collect())
+                Ok(reader
+                    .read_f32::<4>(acc(i)?)?
+                    .into_iter()
+                    .map(Vec4::from)
+                    .collect())
             })
             .transpose()?;
-        let tex_coords0 = self.attributes.get("TEXCOORD_0").map(|&i| vec2(i)).transpose()?;
-        let tex_coords1 = self.attributes.get("TEXCOORD_1").map(|&i| vec2(i)).transpose()?;
+        let tex_coords0 = self
+            .attributes
+            .get("TEXCOORD_0")
+            .map(|&i| vec2(i))
+            .transpose()?;
+        let tex_coords1 = self
+            .attributes
+            .get("TEXCOORD_1")
+            .map(|&i| vec2(i))
+            .transpose()?;
         let colors0 = match self.attributes.get("COLOR_0") {
             None => None,
             Some(&i) => {
@@ -472,7 +573,11 @@ impl PrimitiveDef {
                         .into_iter()
                         .map(|c| Vec3::from(c).extend(1.0))
                         .collect(),
-                    _ => reader.read_f32::<4>(a)?.into_iter().map(Vec4::from).collect(),
+                    _ => reader
+                        .read_f32::<4>(a)?
+                        .into_iter()
+                        .map(Vec4::from)
+                        .collect(),
                 })
             }
         };

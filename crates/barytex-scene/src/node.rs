@@ -35,7 +35,9 @@ impl NodeDef {
         refs: &NodeRefs,
         mesh_targets: &[(usize, bool)],
     ) -> Result<Self, SceneError> {
-        let children = obj.opt_indices("children", refs.nodes, "node")?.unwrap_or_default();
+        let children = obj
+            .opt_indices("children", refs.nodes, "node")?
+            .unwrap_or_default();
         let mesh = obj.opt_index("mesh", refs.meshes, "mesh")?;
         let camera = obj.opt_index("camera", refs.cameras, "camera")?;
         let skin = obj.opt_index("skin", refs.skins, "skin")?;
@@ -50,7 +52,11 @@ impl NodeDef {
         if skin.is_some() && mesh.is_none() {
             return Err(obj.error("skin", "a skin requires a mesh on the same node"));
         }
-        if skin.is_some() && mesh.and_then(|m| mesh_targets.get(m)).is_some_and(|&(_, skinned)| !skinned) {
+        if skin.is_some()
+            && mesh
+                .and_then(|m| mesh_targets.get(m))
+                .is_some_and(|&(_, skinned)| !skinned)
+        {
             return Err(obj.error("skin", "the node's mesh has no JOINTS_0/WEIGHTS_0 to skin"));
         }
         if let Some(w) = obj.opt_array("weights")? {
@@ -61,7 +67,10 @@ impl NodeDef {
             if w.len() != targets {
                 return Err(obj.error(
                     "weights",
-                    format!("{} weights for a mesh with {targets} morph targets", w.len()),
+                    format!(
+                        "{} weights for a mesh with {targets} morph targets",
+                        w.len()
+                    ),
                 ));
             }
         }
@@ -72,12 +81,18 @@ impl NodeDef {
         let local = match matrix {
             Some(m) => {
                 if translation.is_some() || rotation.is_some() || scale.is_some() {
-                    return Err(obj.error("matrix", "matrix and translation/rotation/scale are both defined"));
+                    return Err(obj.error(
+                        "matrix",
+                        "matrix and translation/rotation/scale are both defined",
+                    ));
                 }
                 let m = Mat4::from_cols_array(&m);
                 // A node matrix must decompose into TRS: no projective row (glTF 2.0 §3.5.2).
                 if m.row(3) != glam::Vec4::W {
-                    return Err(obj.error("matrix", "the matrix is not affine (last row is not 0, 0, 0, 1)"));
+                    return Err(obj.error(
+                        "matrix",
+                        "the matrix is not affine (last row is not 0, 0, 0, 1)",
+                    ));
                 }
                 m
             }
@@ -88,14 +103,18 @@ impl NodeDef {
                     None => Quat::IDENTITY,
                     Some(q) => {
                         if q.iter().any(|c| !(-1.0..=1.0).contains(c)) {
-                            return Err(obj.error("rotation", "quaternion components must be in [−1, 1]"));
+                            return Err(
+                                obj.error("rotation", "quaternion components must be in [−1, 1]")
+                            );
                         }
                         let q = Quat::from_array(q);
                         let len = q.length();
                         // Exporters write unit quaternions to about 7 digits; anything far off
                         // is not a rotation (the validator's ROTATION_NON_UNIT).
                         if !((len - 1.0).abs() <= 1e-3) {
-                            return Err(obj.error("rotation", format!("quaternion length {len} is not 1")));
+                            return Err(
+                                obj.error("rotation", format!("quaternion length {len} is not 1"))
+                            );
                         }
                         // Normalised: tiny export errors must not become scale.
                         q / len
@@ -121,13 +140,19 @@ impl NodeDef {
 }
 
 /// The parent of every node, after checking the hierarchy is a forest within `limits`.
-pub(crate) fn check_forest(nodes: &[NodeDef], limits: &SceneLimits) -> Result<Vec<Option<usize>>, SceneError> {
+pub(crate) fn check_forest(
+    nodes: &[NodeDef],
+    limits: &SceneLimits,
+) -> Result<Vec<Option<usize>>, SceneError> {
     let mut parent: Vec<Option<usize>> = vec![None; nodes.len()];
     for (p, node) in nodes.iter().enumerate() {
         for (k, &c) in node.children.iter().enumerate() {
             let ptr = format!("/nodes/{p}/children/{k}");
             if c == p {
-                return Err(SceneError::invalid(ptr, format!("node {p} is its own child")));
+                return Err(SceneError::invalid(
+                    ptr,
+                    format!("node {p} is its own child"),
+                ));
             }
             let slot = parent
                 .get_mut(c)
@@ -207,7 +232,12 @@ mod tests {
         assert!(check_forest(&[node(vec![1]), node(vec![0])], &limits).is_err());
         assert!(check_forest(&[node(vec![2]), node(vec![2]), node(vec![])], &limits).is_err());
         assert!(check_forest(&[node(vec![0])], &limits).is_err());
-        let chain: Vec<NodeDef> = (0..100).map(|i| node(if i < 99 { vec![i + 1] } else { vec![] })).collect();
-        assert!(matches!(check_forest(&chain, &limits), Err(SceneError::TooLarge { .. })));
+        let chain: Vec<NodeDef> = (0..100)
+            .map(|i| node(if i < 99 { vec![i + 1] } else { vec![] }))
+            .collect();
+        assert!(matches!(
+            check_forest(&chain, &limits),
+            Err(SceneError::TooLarge { .. })
+        ));
     }
 }

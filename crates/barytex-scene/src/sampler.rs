@@ -1,11 +1,11 @@
 //! glTF samplers as small enums of their own (the glTF numbers are GL enums), with the spec's
 //! defaults and a conversion to `barytex_texture`'s [`SamplerDescriptor`].
 
-use barytex_texture::sampler::{AddressMode, FilterMode, MipmapFilterMode};
 use barytex_texture::SamplerDescriptor;
+use barytex_texture::sampler::{AddressMode, FilterMode, MipmapFilterMode};
 
-use crate::json::Obj;
 use crate::SceneError;
+use crate::json::Obj;
 
 /// Magnification filter (`magFilter`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -108,7 +108,10 @@ impl Sampler {
                 9728 => MagFilter::Nearest,
                 9729 => MagFilter::Linear,
                 other => {
-                    warnings.push(format!("{}: unknown magFilter {other}", obj.at("magFilter")));
+                    warnings.push(format!(
+                        "{}: unknown magFilter {other}",
+                        obj.at("magFilter")
+                    ));
                     MagFilter::Linear
                 }
             };
@@ -122,7 +125,10 @@ impl Sampler {
                 9986 => MinFilter::NearestMipmapLinear,
                 9987 => MinFilter::LinearMipmapLinear,
                 other => {
-                    warnings.push(format!("{}: unknown minFilter {other}", obj.at("minFilter")));
+                    warnings.push(format!(
+                        "{}: unknown minFilter {other}",
+                        obj.at("minFilter")
+                    ));
                     MinFilter::LinearMipmapLinear
                 }
             };

@@ -114,7 +114,10 @@ impl Scene {
     /// Triangles over all instances.
     #[must_use]
     pub fn triangle_count(&self) -> usize {
-        self.instances.iter().map(MeshInstance::triangle_count).sum()
+        self.instances
+            .iter()
+            .map(MeshInstance::triangle_count)
+            .sum()
     }
 
     /// The material a primitive uses (the glTF default material for `None`).

@@ -2,9 +2,9 @@
 //! file: joint and accessor references, the inverse-bind-matrix format and count, the joints'
 //! common root, the skeleton node, and the matrices' affine last row are checked.
 
+use crate::SceneError;
 use crate::accessor::{AccessorDef, ComponentType, ElementType, Reader, ViewDef};
 use crate::json::Obj;
-use crate::SceneError;
 
 /// A skin as declared.
 #[derive(Clone, Debug)]
@@ -16,27 +16,46 @@ pub(crate) struct SkinDef {
 }
 
 impl SkinDef {
-    pub(crate) fn parse(s: Obj<'_>, nodes: usize, accessors: &[AccessorDef], views: &[ViewDef]) -> Result<Self, SceneError> {
+    pub(crate) fn parse(
+        s: Obj<'_>,
+        nodes: usize,
+        accessors: &[AccessorDef],
+        views: &[ViewDef],
+    ) -> Result<Self, SceneError> {
         let joints = s
             .opt_indices("joints", nodes, "node")?
             .ok_or_else(|| SceneError::invalid(s.ptr, "required property 'joints' is missing"))?;
         let skeleton = s.opt_index("skeleton", nodes, "node")?;
-        let inverse_bind_matrices = s.opt_index("inverseBindMatrices", accessors.len(), "accessor")?;
+        let inverse_bind_matrices =
+            s.opt_index("inverseBindMatrices", accessors.len(), "accessor")?;
         if let Some(i) = inverse_bind_matrices {
             let acc = accessors
                 .get(i)
                 .ok_or_else(|| s.error("inverseBindMatrices", "unresolved accessor"))?;
-            let ok = acc
-                .layout
-                .is_some_and(|l| l.element == ElementType::Mat4 && l.component == ComponentType::F32);
+            let ok = acc.layout.is_some_and(|l| {
+                l.element == ElementType::Mat4 && l.component == ComponentType::F32
+            });
             if !ok {
-                return Err(s.error("inverseBindMatrices", "inverse bind matrices must be MAT4 FLOAT"));
+                return Err(s.error(
+                    "inverseBindMatrices",
+                    "inverse bind matrices must be MAT4 FLOAT",
+                ));
             }
             if acc.count < joints.len() as u64 {
-                return Err(s.error("inverseBindMatrices", "fewer inverse bind matrices than joints"));
+                return Err(s.error(
+                    "inverseBindMatrices",
+                    "fewer inverse bind matrices than joints",
+                ));
             }
-            if acc.view.and_then(|v| views.get(v)).is_some_and(|v| v.stride.is_some()) {
-                return Err(s.error("inverseBindMatrices", "the bufferView must not define byteStride"));
+            if acc
+                .view
+                .and_then(|v| views.get(v))
+                .is_some_and(|v| v.stride.is_some())
+            {
+                return Err(s.error(
+                    "inverseBindMatrices",
+                    "the bufferView must not define byteStride",
+                ));
             }
         }
         Ok(Self {
@@ -73,7 +92,10 @@ impl SkinDef {
         };
         let common = root(first);
         if self.joints.iter().any(|&j| root(j) != common) {
-            return Err(SceneError::invalid(format!("{}/joints", self.ptr), "joints do not share a common root"));
+            return Err(SceneError::invalid(
+                format!("{}/joints", self.ptr),
+                "joints do not share a common root",
+            ));
         }
         if let Some(s) = self.skeleton {
             if self.joints.iter().any(|&j| !ancestors(j).contains(&s)) {
@@ -98,7 +120,11 @@ impl SkinDef {
     }
 
     /// Inverse bind matrices must be affine (last row 0, 0, 0, 1).
-    pub(crate) fn check_data(&self, accessors: &[AccessorDef], reader: &Reader<'_>) -> Result<(), SceneError> {
+    pub(crate) fn check_data(
+        &self,
+        accessors: &[AccessorDef],
+        reader: &Reader<'_>,
+    ) -> Result<(), SceneError> {
         let Some(acc) = self
             .inverse_bind_matrices
             .and_then(|i| accessors.get(i))
@@ -108,7 +134,10 @@ impl SkinDef {
         };
         for (k, m) in reader.read_f32::<16>(acc)?.into_iter().enumerate() {
             if [m[3], m[7], m[11], m[15]] != [0.0, 0.0, 0.0, 1.0] {
-                return Err(SceneError::invalid(&acc.ptr, format!("inverse bind matrix {k} is not affine")));
+                return Err(SceneError::invalid(
+                    &acc.ptr,
+                    format!("inverse bind matrix {k} is not affine"),
+                ));
             }
         }
         Ok(())

@@ -40,7 +40,10 @@ impl Topology {
     /// Whether the topology produces triangles.
     #[must_use]
     pub fn is_triangles(self) -> bool {
-        matches!(self, Self::Triangles | Self::TriangleStrip | Self::TriangleFan)
+        matches!(
+            self,
+            Self::Triangles | Self::TriangleStrip | Self::TriangleFan
+        )
     }
 
     /// How many triangles `n` vertices (or indices) produce.
@@ -98,7 +101,10 @@ mod tests {
             triangulate(Topology::TriangleFan, &[0, 1, 2, 3]),
             vec![[1, 2, 0], [2, 3, 0]]
         );
-        assert_eq!(triangulate(Topology::Triangles, &[0, 1, 2, 3]), vec![[0, 1, 2]]);
+        assert_eq!(
+            triangulate(Topology::Triangles, &[0, 1, 2, 3]),
+            vec![[0, 1, 2]]
+        );
         assert!(triangulate(Topology::Lines, &[0, 1]).is_empty());
         assert_eq!(Topology::TriangleFan.triangle_count(1), 0);
     }

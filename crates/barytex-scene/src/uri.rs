@@ -42,7 +42,10 @@ pub(crate) fn parse(uri: &str, max_bytes: u64) -> Result<Uri, String> {
         if !base64 {
             // RFC 2397: without ";base64" the payload is percent-encoded octets.
             if payload.len() as u64 > max_bytes {
-                return Err(format!("data URI of {} bytes exceeds the limit {max_bytes}", payload.len()));
+                return Err(format!(
+                    "data URI of {} bytes exceeds the limit {max_bytes}",
+                    payload.len()
+                ));
             }
             let bytes: Vec<u8> = percent_encoding::percent_decode_str(payload).collect();
             return Ok(Uri::Data { media_type, bytes });
@@ -151,7 +154,10 @@ mod tests {
             parse("Box%20With%20Spaces.bin", 0),
             Ok(Uri::Relative("Box With Spaces.bin".into()))
         );
-        assert!(matches!(parse("http://x/y.bin", 0), Ok(Uri::NonRelative(_))));
+        assert!(matches!(
+            parse("http://x/y.bin", 0),
+            Ok(Uri::NonRelative(_))
+        ));
         assert!(parse(":", 0).is_err());
         assert!(parse("", 0).is_err());
     }

@@ -4,8 +4,8 @@
 
 use std::collections::BTreeSet;
 
-use crate::json::{as_obj, child, Obj};
 use crate::SceneError;
+use crate::json::{Obj, as_obj, child};
 
 /// Reads the root extension: the number of variants, `None` when the extension is absent.
 pub(crate) fn root_variants(root: Obj<'_>) -> Result<Option<usize>, SceneError> {
@@ -25,13 +25,20 @@ pub(crate) fn root_variants(root: Obj<'_>) -> Result<Option<usize>, SceneError> 
 }
 
 /// Checks a primitive's `KHR_materials_variants` object.
-pub(crate) fn check_primitive(p: Obj<'_>, variants: Option<usize>, materials: usize) -> Result<(), SceneError> {
+pub(crate) fn check_primitive(
+    p: Obj<'_>,
+    variants: Option<usize>,
+    materials: usize,
+) -> Result<(), SceneError> {
     let Some(ext) = p.extension("KHR_materials_variants")? else {
         return Ok(());
     };
     let ptr = child(&p.at("extensions"), "KHR_materials_variants");
     let Some(count) = variants else {
-        return Err(SceneError::invalid(ptr, "the root defines no KHR_materials_variants variants"));
+        return Err(SceneError::invalid(
+            ptr,
+            "the root defines no KHR_materials_variants variants",
+        ));
     };
     let ext = as_obj(ext, &ptr)?;
     let mappings = ext

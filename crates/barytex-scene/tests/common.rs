@@ -9,7 +9,10 @@ pub fn fixtures() -> Option<PathBuf> {
     if dir.is_dir() {
         Some(dir)
     } else {
-        println!("note: fixtures folder {} absent, test skipped", dir.display());
+        println!(
+            "note: fixtures folder {} absent, test skipped",
+            dir.display()
+        );
         None
     }
 }

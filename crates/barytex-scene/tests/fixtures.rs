@@ -4,10 +4,14 @@ mod common;
 
 use std::path::{Path, PathBuf};
 
-use barytex_scene::{load_path, LoadOptions, Projection, Scene, SceneError};
+use barytex_scene::{LoadOptions, Projection, Scene, SceneError, load_path};
 
 fn model(name: &str, variant: &str, file: &str) -> Option<PathBuf> {
-    let p = common::fixtures()?.join("gltf").join(name).join(variant).join(file);
+    let p = common::fixtures()?
+        .join("gltf")
+        .join(name)
+        .join(variant)
+        .join(file);
     p.exists().then_some(p)
 }
 
@@ -21,7 +25,11 @@ fn load(p: &Path) -> Scene {
 /// Loads every variant of a model present; `check` runs on each.
 fn each_variant(name: &str, file_stem: &str, check: impl Fn(&Path, &Scene)) {
     let mut n = 0;
-    for (variant, ext) in [("glTF", "gltf"), ("glTF-Binary", "glb"), ("glTF-Embedded", "gltf")] {
+    for (variant, ext) in [
+        ("glTF", "gltf"),
+        ("glTF-Binary", "glb"),
+        ("glTF-Embedded", "gltf"),
+    ] {
         if let Some(p) = model(name, variant, &format!("{file_stem}.{ext}")) {
             let s = load(&p);
             check(&p, &s);
@@ -50,7 +58,11 @@ fn every_sample_model_loads() {
             Err(e) => failures.push(format!("{}: {e}", p.display())),
         }
     }
-    println!("{} sample files loaded, {} failed", models.len() - failures.len(), failures.len());
+    println!(
+        "{} sample files loaded, {} failed",
+        models.len() - failures.len(),
+        failures.len()
+    );
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
@@ -70,10 +82,14 @@ fn box_has_twelve_triangles() {
 
 #[test]
 fn triangle_without_indices() {
-    each_variant("TriangleWithoutIndices", "TriangleWithoutIndices", |p, s| {
-        assert_eq!(s.triangle_count(), 1, "{}", p.display());
-        assert_eq!(s.instances[0].mesh.primitives[0].triangles, vec![[0, 1, 2]]);
-    });
+    each_variant(
+        "TriangleWithoutIndices",
+        "TriangleWithoutIndices",
+        |p, s| {
+            assert_eq!(s.triangle_count(), 1, "{}", p.display());
+            assert_eq!(s.instances[0].mesh.primitives[0].triangles, vec![[0, 1, 2]]);
+        },
+    );
 }
 
 #[test]
@@ -116,8 +132,16 @@ fn multiple_scenes() {
 fn two_cameras() {
     each_variant("Cameras", "Cameras", |p, s| {
         assert_eq!(s.cameras.len(), 2, "{}", p.display());
-        assert!(s.cameras.iter().any(|c| matches!(c.projection, Projection::Perspective { .. })));
-        assert!(s.cameras.iter().any(|c| matches!(c.projection, Projection::Orthographic { .. })));
+        assert!(
+            s.cameras
+                .iter()
+                .any(|c| matches!(c.projection, Projection::Perspective { .. }))
+        );
+        assert!(
+            s.cameras
+                .iter()
+                .any(|c| matches!(c.projection, Projection::Orthographic { .. }))
+        );
     });
 }
 
@@ -153,7 +177,13 @@ fn primitive_modes() {
         assert_eq!(s.triangle_count(), 16);
         // POINTS, LINES, LINE_LOOP, LINE_STRIP: skipped, counted and warned about.
         assert_eq!(s.stats.primitives_skipped_non_triangle, 4);
-        assert_eq!(s.warnings.iter().filter(|w| w.contains("not triangles")).count(), 4);
+        assert_eq!(
+            s.warnings
+                .iter()
+                .filter(|w| w.contains("not triangles"))
+                .count(),
+            4
+        );
     });
 }
 
@@ -161,7 +191,11 @@ fn primitive_modes() {
 fn odd_file_names_load() {
     each_variant("Unicode❤♻Test", "Unicode❤♻Test", |p, s| {
         assert!(s.triangle_count() > 0, "{}", p.display());
-        assert!(s.stats.images_decoded > 0, "{}: texture not decoded", p.display());
+        assert!(
+            s.stats.images_decoded > 0,
+            "{}: texture not decoded",
+            p.display()
+        );
     });
     each_variant("Box With Spaces", "Box With Spaces", |p, s| {
         assert!(s.triangle_count() > 0, "{}", p.display());

@@ -9,7 +9,7 @@ mod common;
 
 use std::path::PathBuf;
 
-use barytex_scene::{load_path, LoadOptions, SceneError};
+use barytex_scene::{LoadOptions, SceneError, load_path};
 
 /// Invalid assets this loader accepts on purpose. Each reason says why the rule the validator
 /// enforces does not matter to what the loader produces.
@@ -77,13 +77,17 @@ fn catalog() -> Vec<Entry> {
         let mut parts = section.splitn(3, '/');
         let dir = match (parts.next(), parts.next(), parts.next()) {
             (Some("base"), Some(group), None) => base.join("test/base/data").join(group),
-            (Some("ext"), Some(ext), Some(rest)) => base.join("test/ext").join(ext).join("data").join(rest),
+            (Some("ext"), Some(ext), Some(rest)) => {
+                base.join("test/ext").join(ext).join("data").join(rest)
+            }
             _ => panic!("unexpected catalog section {section:?}"),
         };
         out.push(Entry {
             id: format!("{section}/{file}"),
             path: dir.join(file),
-            errors: errors.parse().unwrap_or_else(|_| panic!("bad count in {line:?}")),
+            errors: errors
+                .parse()
+                .unwrap_or_else(|_| panic!("bad count in {line:?}")),
             codes: (*codes).to_owned(),
         });
     }
@@ -111,7 +115,10 @@ fn validator_assets() {
                 refused += 1;
                 println!("refused  {} [{}]: {err}", e.id, e.codes);
                 if allowed(ACCEPTED_DESPITE_ERRORS, &e.id) {
-                    problems.push(format!("{} is refused now: drop it from the allow-list", e.id));
+                    problems.push(format!(
+                        "{} is refused now: drop it from the allow-list",
+                        e.id
+                    ));
                 }
             }
             (Ok(_), false) => {
@@ -142,5 +149,10 @@ fn validator_assets() {
         ACCEPTED_DESPITE_ERRORS.len(),
         REFUSED_DESPITE_VALID.len()
     );
-    assert!(problems.is_empty(), "{} problems:\n{}", problems.len(), problems.join("\n"));
+    assert!(
+        problems.is_empty(),
+        "{} problems:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
 }
