@@ -344,17 +344,17 @@ impl AccessorDef {
         let mut bounds: [Option<Vec<f64>>; 2] = [None, None];
         for (slot, key) in bounds.iter_mut().zip(["min", "max"]) {
             if let Some(arr) = obj.opt_array(key)? {
-                if let Some(e) = element {
-                    if arr.len() != e.components() {
-                        return Err(obj.error(
-                            key,
-                            format!(
-                                "{} values for a {}-component type",
-                                arr.len(),
-                                e.components()
-                            ),
-                        ));
-                    }
+                if let Some(e) = element
+                    && arr.len() != e.components()
+                {
+                    return Err(obj.error(
+                        key,
+                        format!(
+                            "{} values for a {}-component type",
+                            arr.len(),
+                            e.components()
+                        ),
+                    ));
                 }
                 let mut values = Vec::with_capacity(arr.len());
                 for (i, v) in arr.iter().enumerate() {
@@ -385,22 +385,20 @@ impl AccessorDef {
                 ));
             }
             let element_size = layout.element_size();
-            if layout.element.is_matrix() && layout.component.size() < 4 {
-                if let Some(s) = v.stride {
-                    if s % 4 != 0 {
-                        return Err(
-                            obj.error("bufferView", "matrix columns must be 4-byte aligned")
-                        );
-                    }
-                }
+            if layout.element.is_matrix()
+                && layout.component.size() < 4
+                && let Some(s) = v.stride
+                && s % 4 != 0
+            {
+                return Err(obj.error("bufferView", "matrix columns must be 4-byte aligned"));
             }
-            if let Some(s) = v.stride {
-                if s < element_size {
-                    return Err(obj.error(
-                        "bufferView",
-                        format!("byteStride {s} is smaller than the element size {element_size}"),
-                    ));
-                }
+            if let Some(s) = v.stride
+                && s < element_size
+            {
+                return Err(obj.error(
+                    "bufferView",
+                    format!("byteStride {s} is smaller than the element size {element_size}"),
+                ));
             }
             let stride = v.stride.unwrap_or(element_size);
             check_range(obj.ptr, "accessor", v, offset, stride, count, element_size)?;
@@ -693,25 +691,21 @@ impl Reader<'_> {
                         d
                     }
                 };
-                if let Some(&lo) = acc.min.as_ref().and_then(|m| m.get(j)) {
-                    if v < as_declared(lo) {
-                        return Err(SceneError::invalid(
-                            &acc.ptr,
-                            format!(
-                                "element {i} component {j} is {v}, below the declared min {lo}"
-                            ),
-                        ));
-                    }
+                if let Some(&lo) = acc.min.as_ref().and_then(|m| m.get(j))
+                    && v < as_declared(lo)
+                {
+                    return Err(SceneError::invalid(
+                        &acc.ptr,
+                        format!("element {i} component {j} is {v}, below the declared min {lo}"),
+                    ));
                 }
-                if let Some(&hi) = acc.max.as_ref().and_then(|m| m.get(j)) {
-                    if v > as_declared(hi) {
-                        return Err(SceneError::invalid(
-                            &acc.ptr,
-                            format!(
-                                "element {i} component {j} is {v}, above the declared max {hi}"
-                            ),
-                        ));
-                    }
+                if let Some(&hi) = acc.max.as_ref().and_then(|m| m.get(j))
+                    && v > as_declared(hi)
+                {
+                    return Err(SceneError::invalid(
+                        &acc.ptr,
+                        format!("element {i} component {j} is {v}, above the declared max {hi}"),
+                    ));
                 }
             }
             Ok(())

@@ -36,15 +36,14 @@ impl BufferDef {
             Some(s) => {
                 let parsed = uri::parse(s, limits.max_buffer_bytes)
                     .map_err(|reason| obj.error("uri", reason))?;
-                if let Uri::Data { media_type, .. } = &parsed {
-                    if media_type != "application/octet-stream"
-                        && media_type != "application/gltf-buffer"
-                    {
-                        return Err(obj.error(
+                if let Uri::Data { media_type, .. } = &parsed
+                    && media_type != "application/octet-stream"
+                    && media_type != "application/gltf-buffer"
+                {
+                    return Err(obj.error(
                             "uri",
                             format!("buffer data URI media type {media_type:?} is not application/octet-stream or application/gltf-buffer"),
                         ));
-                    }
                 }
                 Some(parsed)
             }

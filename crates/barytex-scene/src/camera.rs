@@ -104,15 +104,15 @@ impl Projection {
                 if znear <= 0.0 {
                     return Err(p.error("znear", format!("znear {znear} must be > 0")));
                 }
-                if let Some(a) = aspect_ratio {
-                    if a <= 0.0 {
-                        return Err(p.error("aspectRatio", format!("aspectRatio {a} must be > 0")));
-                    }
+                if let Some(a) = aspect_ratio
+                    && a <= 0.0
+                {
+                    return Err(p.error("aspectRatio", format!("aspectRatio {a} must be > 0")));
                 }
-                if let Some(f) = zfar {
-                    if f <= znear {
-                        return Err(p.error("zfar", format!("zfar {f} ≤ znear {znear}")));
-                    }
+                if let Some(f) = zfar
+                    && f <= znear
+                {
+                    return Err(p.error("zfar", format!("zfar {f} ≤ znear {znear}")));
                 }
                 Ok(Self::Perspective {
                     yfov,

@@ -245,10 +245,10 @@ impl Document {
                 let eptr = child(&t.at("extensions"), "EXT_texture_webp");
                 as_obj(ext, &eptr)?.opt_index("source", images.len(), "image")?;
             }
-            if let Some(i) = image {
-                if images.get(i).and_then(|im| im.mime.as_deref()) == Some("image/webp") {
-                    return Err(t.error("source", "a core texture source must be PNG or JPEG"));
-                }
+            if let Some(i) = image
+                && images.get(i).and_then(|im| im.mime.as_deref()) == Some("image/webp")
+            {
+                return Err(t.error("source", "a core texture source must be PNG or JPEG"));
             }
             textures.push(Texture { image, sampler });
         }
@@ -515,29 +515,29 @@ impl Document {
                 }
                 placed_meshes.push((n, m, world));
             }
-            if let Some(c) = node.camera {
-                if let Some((cname, projection)) = self.cameras.get(c) {
-                    cameras.push(SceneCamera {
-                        node: n,
-                        camera: c,
-                        name: cname.clone(),
-                        projection: *projection,
-                        world,
-                    });
-                }
+            if let Some(c) = node.camera
+                && let Some((cname, projection)) = self.cameras.get(c)
+            {
+                cameras.push(SceneCamera {
+                    node: n,
+                    camera: c,
+                    name: cname.clone(),
+                    projection: *projection,
+                    world,
+                });
             }
-            if let Some(l) = node.light {
-                if let Some(Some(light)) = self.lights.get(l) {
-                    let direction = world.transform_vector3(Vec3::NEG_Z).normalize_or_zero();
-                    lights.push(SceneLight {
-                        node: n,
-                        light_index: l,
-                        light: light.clone(),
-                        world,
-                        position: world.transform_point3(Vec3::ZERO),
-                        direction,
-                    });
-                }
+            if let Some(l) = node.light
+                && let Some(Some(light)) = self.lights.get(l)
+            {
+                let direction = world.transform_vector3(Vec3::NEG_Z).normalize_or_zero();
+                lights.push(SceneLight {
+                    node: n,
+                    light_index: l,
+                    light: light.clone(),
+                    world,
+                    position: world.transform_point3(Vec3::ZERO),
+                    direction,
+                });
             }
             for &c in node.children.iter().rev() {
                 stack.push((c, world));

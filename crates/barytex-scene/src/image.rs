@@ -43,10 +43,10 @@ impl ImageDef {
         let uri_str = obj.opt_str("uri")?;
         let view = obj.opt_index("bufferView", views.len(), "bufferView")?;
         let mut mime = obj.opt_str("mimeType")?.map(str::to_owned);
-        if let Some(m) = &mime {
-            if !mime_allowed(m, webp) {
-                return Err(obj.error("mimeType", format!("unsupported image MIME type {m:?}")));
-            }
+        if let Some(m) = &mime
+            && !mime_allowed(m, webp)
+        {
+            return Err(obj.error("mimeType", format!("unsupported image MIME type {m:?}")));
         }
         let source = match (uri_str, view) {
             (Some(_), Some(_)) | (None, None) => {
@@ -65,13 +65,13 @@ impl ImageDef {
                             format!("image data URI media type {media_type:?} is not image/png or image/jpeg"),
                         ));
                     }
-                    if let Some(m) = &mime {
-                        if m != media_type {
-                            return Err(obj.error(
-                                "mimeType",
-                                "mimeType differs from the data URI's media type",
-                            ));
-                        }
+                    if let Some(m) = &mime
+                        && m != media_type
+                    {
+                        return Err(obj.error(
+                            "mimeType",
+                            "mimeType differs from the data URI's media type",
+                        ));
                     }
                     mime = Some(media_type.clone());
                 }

@@ -184,7 +184,7 @@ fn check_vertex_accessor(
     let v = ctx.views.get(view);
     let stride = v.and_then(|v| v.stride).unwrap_or(layout.element_size());
     let start = v.map_or(0, |v| v.offset) + acc.offset;
-    if start % 4 != 0 || stride % 4 != 0 {
+    if !start.is_multiple_of(4) || stride % 4 != 0 {
         return Err(SceneError::invalid(
             ptr,
             "vertex attribute data must be aligned to 4-byte boundaries",
@@ -221,13 +221,13 @@ impl MeshDef {
             ));
         }
         let target_count = target_counts.into_iter().next().unwrap_or(0);
-        if let Some(w) = obj.opt_array("weights")? {
-            if w.len() != target_count {
-                return Err(obj.error(
-                    "weights",
-                    format!("{} weights for {target_count} morph targets", w.len()),
-                ));
-            }
+        if let Some(w) = obj.opt_array("weights")?
+            && w.len() != target_count
+        {
+            return Err(obj.error(
+                "weights",
+                format!("{} weights for {target_count} morph targets", w.len()),
+            ));
         }
         Ok(Self {
             name: obj.opt_str("name")?.map(str::to_owned),
@@ -293,17 +293,16 @@ fn parse_primitive(
                 _ => vertex_count = Some(acc.count),
             }
             check_vertex_accessor(ctx, acc, &ptr)?;
-            if let Some(view) = acc.view {
-                if ctx.views.get(view).is_some_and(|v| v.stride.is_none())
-                    && !unstrided_views.insert(view)
-                {
-                    return Err(SceneError::invalid(
-                        &ptr,
-                        format!(
-                            "attributes share bufferView {view}, which must then define byteStride"
-                        ),
-                    ));
-                }
+            if let Some(view) = acc.view
+                && ctx.views.get(view).is_some_and(|v| v.stride.is_none())
+                && !unstrided_views.insert(view)
+            {
+                return Err(SceneError::invalid(
+                    &ptr,
+                    format!(
+                        "attributes share bufferView {view}, which must then define byteStride"
+                    ),
+                ));
             }
             attributes.insert(name.clone(), index);
         }

@@ -111,7 +111,8 @@ impl NodeDef {
                         let len = q.length();
                         // Exporters write unit quaternions to about 7 digits; anything far off
                         // is not a rotation (the validator's ROTATION_NON_UNIT).
-                        if !((len - 1.0).abs() <= 1e-3) {
+                        // (Components are finite and within [−1, 1], so `len` is never NaN.)
+                        if (len - 1.0).abs() > 1e-3 {
                             return Err(
                                 obj.error("rotation", format!("quaternion length {len} is not 1"))
                             );

@@ -97,13 +97,13 @@ impl SkinDef {
                 "joints do not share a common root",
             ));
         }
-        if let Some(s) = self.skeleton {
-            if self.joints.iter().any(|&j| !ancestors(j).contains(&s)) {
-                return Err(SceneError::invalid(
-                    format!("{}/skeleton", self.ptr),
-                    format!("node {s} is not an ancestor of every joint"),
-                ));
-            }
+        if let Some(s) = self.skeleton
+            && self.joints.iter().any(|&j| !ancestors(j).contains(&s))
+        {
+            return Err(SceneError::invalid(
+                format!("{}/skeleton", self.ptr),
+                format!("node {s} is not an ancestor of every joint"),
+            ));
         }
         for &n in skinned_nodes {
             let r = root(n);

@@ -4,6 +4,7 @@
 use std::path::PathBuf;
 
 /// `/work/shared/fixtures`, found relative to the crate (`../../../shared/fixtures`).
+#[must_use]
 pub fn fixtures() -> Option<PathBuf> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/fixtures");
     if dir.is_dir() {
@@ -18,6 +19,7 @@ pub fn fixtures() -> Option<PathBuf> {
 }
 
 /// Every `.gltf`/`.glb` under `<fixtures>/gltf/*/glTF*/`, sorted.
+#[must_use]
 pub fn sample_models() -> Vec<PathBuf> {
     let Some(root) = fixtures() else {
         return Vec::new();
