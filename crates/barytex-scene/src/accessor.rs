@@ -336,6 +336,14 @@ impl AccessorDef {
             ));
         }
         let view = obj.opt_index("bufferView", views.len(), "bufferView")?;
+        if view.is_none() && count > limits.max_unbacked_accessor_elements {
+            return Err(SceneError::TooLarge {
+                pointer: obj.at("count"),
+                what: "elements in an accessor without bufferView",
+                requested: count,
+                limit: limits.max_unbacked_accessor_elements,
+            });
+        }
         let offset = obj.opt_u64("byteOffset")?;
         if view.is_none() && offset.is_some() {
             return Err(obj.error("byteOffset", "byteOffset requires bufferView"));
@@ -378,7 +386,7 @@ impl AccessorDef {
                     format!("byteOffset {offset} is not a multiple of the component size {size}"),
                 ));
             }
-            if (v.offset + offset) % size != 0 {
+            if !v.offset.wrapping_add(offset).is_multiple_of(size) {
                 return Err(obj.error(
                     "byteOffset",
                     format!("bufferView offset + byteOffset is not a multiple of the component size {size}"),
@@ -491,7 +499,11 @@ fn parse_sparse(
         ));
     }
     let isize_ = indices_component.size();
-    if (iv.offset + indices_offset) % isize_ != 0 {
+    if !iv
+        .offset
+        .wrapping_add(indices_offset)
+        .is_multiple_of(isize_)
+    {
         return Err(indices.error("byteOffset", "sparse indices are misaligned"));
     }
     check_range(
@@ -514,7 +526,11 @@ fn parse_sparse(
     }
     if let Some(layout) = layout {
         let es = layout.element_size();
-        if (vv.offset + values_offset) % layout.component.size() != 0 {
+        if !vv
+            .offset
+            .wrapping_add(values_offset)
+            .is_multiple_of(layout.component.size())
+        {
             return Err(values.error("byteOffset", "sparse values are misaligned"));
         }
         check_range(

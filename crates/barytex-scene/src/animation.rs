@@ -192,7 +192,9 @@ pub(crate) fn check(
                 format!("output format not allowed for {path}"),
             ));
         }
-        let expected = input_count * per_key as u64 * if *cubic { 3 } else { 1 };
+        let expected = input_count
+            .saturating_mul(per_key as u64)
+            .saturating_mul(if *cubic { 3 } else { 1 });
         if output.count != expected {
             return Err(SceneError::invalid(
                 out_ptr,

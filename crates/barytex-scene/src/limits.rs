@@ -19,6 +19,10 @@ pub struct SceneLimits {
     pub max_triangles: u64,
     /// Most elements in one accessor.
     pub max_accessor_elements: u64,
+    /// Most elements in an accessor without a bufferView (all zeros, or zeros under sparse
+    /// values): its memory is not paid for by bytes in the file, so a tiny file could otherwise
+    /// ask for gigabytes.
+    pub max_unbacked_accessor_elements: u64,
     /// Deepest node hierarchy (a root node has depth 1).
     pub max_node_depth: usize,
     /// Most nodes in the document.
@@ -39,6 +43,7 @@ impl Default for SceneLimits {
             image: barytex_texture::Limits::default(),
             max_triangles: 50_000_000,
             max_accessor_elements: 100_000_000,
+            max_unbacked_accessor_elements: 1 << 20,
             max_node_depth: 64,
             max_nodes: 1_000_000,
             max_instances: 1_000_000,

@@ -183,7 +183,8 @@ fn check_vertex_accessor(
     };
     let v = ctx.views.get(view);
     let stride = v.and_then(|v| v.stride).unwrap_or(layout.element_size());
-    let start = v.map_or(0, |v| v.offset) + acc.offset;
+    // Wrapping keeps the residue mod 4 (2⁶⁴ is a multiple of 4) without overflow.
+    let start = v.map_or(0, |v| v.offset).wrapping_add(acc.offset);
     if !start.is_multiple_of(4) || stride % 4 != 0 {
         return Err(SceneError::invalid(
             ptr,
