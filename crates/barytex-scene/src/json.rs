@@ -261,8 +261,40 @@ pub(crate) fn check_index(
         })
 }
 
-/// Walks the tree refusing empty arrays, which the glTF schema forbids everywhere
-/// (`minItems: 1`), except inside `extras` and inside extensions this crate does not read.
+/// Array-valued properties of the glTF schema (and of the extensions this crate reads), all of
+/// which require at least one item. Unknown (custom) properties are not judged.
+const NON_EMPTY_ARRAYS: [&str; 27] = [
+    "accessors",
+    "animations",
+    "buffers",
+    "bufferViews",
+    "cameras",
+    "images",
+    "materials",
+    "meshes",
+    "nodes",
+    "samplers",
+    "scenes",
+    "skins",
+    "textures",
+    "extensionsUsed",
+    "extensionsRequired",
+    "children",
+    "primitives",
+    "targets",
+    "weights",
+    "joints",
+    "channels",
+    "min",
+    "max",
+    "lights",
+    "variants",
+    "mappings",
+    "matrix",
+];
+
+/// Walks the tree refusing empty arrays where the glTF schema forbids them (`minItems: 1`),
+/// except inside `extras` and inside extensions this crate does not read.
 pub(crate) fn check_no_empty_arrays(
     value: &Value,
     ptr: &str,
@@ -279,12 +311,6 @@ pub(crate) fn check_no_empty_arrays(
     }
     match value {
         Value::Array(items) => {
-            if items.is_empty() {
-                return Err(SceneError::invalid(
-                    ptr,
-                    "an empty array (arrays must have at least one item)",
-                ));
-            }
             for (i, item) in items.iter().enumerate() {
                 check_no_empty_arrays(item, &child(ptr, &i.to_string()), depth + 1)?;
             }
@@ -303,7 +329,18 @@ pub(crate) fn check_no_empty_arrays(
                             }
                         }
                     }
-                    _ => check_no_empty_arrays(item, &child(ptr, key), depth + 1)?,
+                    _ => {
+                        let item_ptr = child(ptr, key);
+                        if item.as_array().is_some_and(Vec::is_empty)
+                            && NON_EMPTY_ARRAYS.contains(&key.as_str())
+                        {
+                            return Err(SceneError::invalid(
+                                item_ptr,
+                                "an empty array (this property needs at least one item)",
+                            ));
+                        }
+                        check_no_empty_arrays(item, &item_ptr, depth + 1)?;
+                    }
                 }
             }
         }

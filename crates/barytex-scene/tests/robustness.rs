@@ -52,7 +52,7 @@ fn byte_flips_never_panic() {
     let (mut ok, mut refused) = (0usize, 0usize);
     for (path, bytes) in &seeds {
         let base = path.parent().unwrap_or(path);
-        for round in 0..150 {
+        for round in 0..400 {
             let mut m = bytes.clone();
             let flips = 1 + rng.below(8);
             for _ in 0..flips {
