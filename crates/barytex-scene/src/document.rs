@@ -449,7 +449,7 @@ impl Document {
             for p in &mesh.primitives {
                 if p.vertex_count.is_some() && primitive_readable(p) {
                     p.read_indices(&self.accessors, &reader)?;
-                    p.check_tangents(&self.accessors, &reader)?;
+                    p.check_attribute_values(&self.accessors, &reader)?;
                 }
             }
         }

@@ -251,7 +251,8 @@ fn parse_primitive(
     let mut attributes = BTreeMap::new();
     let mut sets: BTreeMap<&str, BTreeSet<u32>> = BTreeMap::new();
     let mut vertex_count: Option<u64> = None;
-    let mut unstrided_views = BTreeSet::new();
+    // bufferView → the first accessor seen reading it without a byteStride.
+    let mut unstrided_views: BTreeMap<usize, usize> = BTreeMap::new();
     if let gltf::json::Value::Object(map) = attrs {
         if map.is_empty() {
             return Err(SceneError::invalid(&aptr, "attributes must not be empty"));
@@ -294,9 +295,11 @@ fn parse_primitive(
                 _ => vertex_count = Some(acc.count),
             }
             check_vertex_accessor(ctx, acc, &ptr)?;
+            // Two different accessors in one view need a stride to say how they interleave
+            // (the same accessor used for two attributes is fine).
             if let Some(view) = acc.view
                 && ctx.views.get(view).is_some_and(|v| v.stride.is_none())
-                && !unstrided_views.insert(view)
+                && *unstrided_views.entry(view).or_insert(index) != index
             {
                 return Err(SceneError::invalid(
                     &ptr,
@@ -480,12 +483,36 @@ impl PrimitiveDef {
         }
     }
 
-    /// Tangents' `w` must be exactly ±1 (the bitangent sign).
-    pub(crate) fn check_tangents(
+    /// Attribute values with a fixed meaning: tangents' `w` is exactly ±1 (the bitangent sign),
+    /// float colours lie in [0, 1].
+    pub(crate) fn check_attribute_values(
         &self,
         accessors: &[AccessorDef],
         reader: &Reader<'_>,
     ) -> Result<(), SceneError> {
+        for (name, &i) in &self.attributes {
+            let Some(acc) = accessors.get(i).filter(|a| a.stores_data()) else {
+                continue;
+            };
+            let float = acc
+                .layout
+                .is_some_and(|l| l.component == ComponentType::F32);
+            if !(name.starts_with("COLOR_") && float) {
+                continue;
+            }
+            let values: Vec<f32> = match acc.layout.map(|l| l.element) {
+                Some(ElementType::Vec3) => {
+                    reader.read_f32::<3>(acc)?.into_iter().flatten().collect()
+                }
+                _ => reader.read_f32::<4>(acc)?.into_iter().flatten().collect(),
+            };
+            if let Some(v) = values.iter().find(|v| !(0.0..=1.0).contains(*v)) {
+                return Err(SceneError::invalid(
+                    &acc.ptr,
+                    format!("colour component {v} outside [0, 1]"),
+                ));
+            }
+        }
         let Some(acc) = self
             .attributes
             .get("TANGENT")
