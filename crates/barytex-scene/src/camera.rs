@@ -1,0 +1,171 @@
+//! Cameras (glTF 2.0 §3.10): the projection as the file gives it, placed by its node.
+
+use glam::{Mat4, Vec4};
+
+use crate::SceneError;
+use crate::json::Obj;
+
+/// A camera's projection, with the parameters glTF stores (not a matrix: the aspect ratio and
+/// the infinite far plane are decisions for the renderer).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Projection {
+    /// Perspective projection.
+    Perspective {
+        /// Vertical field of view in radians.
+        yfov: f32,
+        /// Width / height; `None` means "use the viewport's".
+        aspect_ratio: Option<f32>,
+        /// Near plane distance (> 0).
+        znear: f32,
+        /// Far plane distance; `None` is an infinite far plane.
+        zfar: Option<f32>,
+    },
+    /// Orthographic projection.
+    Orthographic {
+        /// Half the width of the view volume.
+        xmag: f32,
+        /// Half the height of the view volume.
+        ymag: f32,
+        /// Near plane distance (≥ 0).
+        znear: f32,
+        /// Far plane distance (> `znear`).
+        zfar: f32,
+    },
+}
+
+impl Projection {
+    /// The projection matrix exactly as the glTF specification's appendix writes it (OpenGL clip
+    /// space, z in [−1, 1]); `viewport_aspect` is used when the camera does not fix its own.
+    #[must_use]
+    pub fn matrix(&self, viewport_aspect: f32) -> Mat4 {
+        match *self {
+            Self::Perspective {
+                yfov,
+                aspect_ratio,
+                znear,
+                zfar,
+            } => {
+                let aspect = aspect_ratio.unwrap_or(viewport_aspect);
+                let t = (0.5 * yfov).tan();
+                let (z2, z3) = match zfar {
+                    Some(f) => ((f + znear) / (znear - f), 2.0 * f * znear / (znear - f)),
+                    None => (-1.0, -2.0 * znear),
+                };
+                Mat4::from_cols(
+                    Vec4::new(1.0 / (aspect * t), 0.0, 0.0, 0.0),
+                    Vec4::new(0.0, 1.0 / t, 0.0, 0.0),
+                    Vec4::new(0.0, 0.0, z2, -1.0),
+                    Vec4::new(0.0, 0.0, z3, 0.0),
+                )
+            }
+            Self::Orthographic {
+                xmag,
+                ymag,
+                znear,
+                zfar,
+            } => Mat4::from_cols(
+                Vec4::new(1.0 / xmag, 0.0, 0.0, 0.0),
+                Vec4::new(0.0, 1.0 / ymag, 0.0, 0.0),
+                Vec4::new(0.0, 0.0, 2.0 / (znear - zfar), 0.0),
+                Vec4::new(0.0, 0.0, (zfar + znear) / (znear - zfar), 1.0),
+            ),
+        }
+    }
+
+    /// Reads `/cameras/i`, refusing degenerate projections (glTF 2.0 §5.12–5.14).
+    pub(crate) fn parse(obj: Obj<'_>, warnings: &mut Vec<String>) -> Result<Self, SceneError> {
+        let ty = obj.req_str("type")?;
+        let persp = obj.opt_obj("perspective")?;
+        let ortho = obj.opt_obj("orthographic")?;
+        if persp.is_some() && ortho.is_some() {
+            return Err(SceneError::invalid(
+                obj.ptr,
+                "both 'perspective' and 'orthographic' are defined",
+            ));
+        }
+        match ty {
+            "perspective" => {
+                let ptr = obj.at("perspective");
+                let p = persp.ok_or_else(|| {
+                    SceneError::invalid(obj.ptr, "type is perspective but 'perspective' is missing")
+                })?;
+                let p = crate::json::as_obj(p, &ptr)?;
+                let yfov = p.req_f32("yfov")?;
+                let znear = p.req_f32("znear")?;
+                let zfar = p.opt_f32("zfar")?;
+                let aspect_ratio = p.opt_f32("aspectRatio")?;
+                if yfov <= 0.0 {
+                    return Err(p.error("yfov", format!("yfov {yfov} must be > 0")));
+                }
+                if yfov >= std::f32::consts::PI {
+                    // Allowed by the schema (the validator does not object); useless to render.
+                    warnings.push(format!("{}: yfov {yfov} is not below π", p.at("yfov")));
+                }
+                if znear <= 0.0 {
+                    return Err(p.error("znear", format!("znear {znear} must be > 0")));
+                }
+                if let Some(a) = aspect_ratio
+                    && a <= 0.0
+                {
+                    return Err(p.error("aspectRatio", format!("aspectRatio {a} must be > 0")));
+                }
+                if let Some(f) = zfar
+                    && f <= znear
+                {
+                    return Err(p.error("zfar", format!("zfar {f} ≤ znear {znear}")));
+                }
+                Ok(Self::Perspective {
+                    yfov,
+                    aspect_ratio,
+                    znear,
+                    zfar,
+                })
+            }
+            "orthographic" => {
+                let ptr = obj.at("orthographic");
+                let o = ortho.ok_or_else(|| {
+                    SceneError::invalid(
+                        obj.ptr,
+                        "type is orthographic but 'orthographic' is missing",
+                    )
+                })?;
+                let o = crate::json::as_obj(o, &ptr)?;
+                let xmag = o.req_f32("xmag")?;
+                let ymag = o.req_f32("ymag")?;
+                let znear = o.req_f32("znear")?;
+                let zfar = o.req_f32("zfar")?;
+                if xmag == 0.0 || ymag == 0.0 {
+                    return Err(SceneError::invalid(ptr, "xmag and ymag must not be zero"));
+                }
+                if znear < 0.0 {
+                    return Err(o.error("znear", format!("znear {znear} must be ≥ 0")));
+                }
+                if zfar <= znear {
+                    return Err(o.error("zfar", format!("zfar {zfar} ≤ znear {znear}")));
+                }
+                Ok(Self::Orthographic {
+                    xmag,
+                    ymag,
+                    znear,
+                    zfar,
+                })
+            }
+            other => Err(obj.error("type", format!("unknown camera type {other:?}"))),
+        }
+    }
+}
+
+/// A camera placed in the flattened scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneCamera {
+    /// Index of the node carrying it.
+    pub node: usize,
+    /// Index into the document's `cameras`.
+    pub camera: usize,
+    /// The camera's name, if any.
+    pub name: Option<String>,
+    /// The projection.
+    pub projection: Projection,
+    /// Camera-to-world matrix (the camera looks down its local −Z, +Y up).
+    pub world: Mat4,
+}

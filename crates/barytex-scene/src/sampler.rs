@@ -1,0 +1,151 @@
+//! glTF samplers as small enums of their own (the glTF numbers are GL enums), with the spec's
+//! defaults and a conversion to `barytex_texture`'s [`SamplerDescriptor`].
+
+use barytex_texture::SamplerDescriptor;
+use barytex_texture::sampler::{AddressMode, FilterMode, MipmapFilterMode};
+
+use crate::SceneError;
+use crate::json::Obj;
+
+/// Magnification filter (`magFilter`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum MagFilter {
+    /// `NEAREST` (9728).
+    Nearest,
+    /// `LINEAR` (9729), the default when absent.
+    #[default]
+    Linear,
+}
+
+/// Minification filter (`minFilter`), including the mipmap modes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum MinFilter {
+    /// `NEAREST` (9728): no mipmaps.
+    Nearest,
+    /// `LINEAR` (9729): no mipmaps.
+    Linear,
+    /// `NEAREST_MIPMAP_NEAREST` (9984).
+    NearestMipmapNearest,
+    /// `LINEAR_MIPMAP_NEAREST` (9985).
+    LinearMipmapNearest,
+    /// `NEAREST_MIPMAP_LINEAR` (9986).
+    NearestMipmapLinear,
+    /// `LINEAR_MIPMAP_LINEAR` (9987), the default when absent (trilinear).
+    #[default]
+    LinearMipmapLinear,
+}
+
+/// Wrap mode along one axis (`wrapS`, `wrapT`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Wrap {
+    /// `REPEAT` (10497), the default.
+    #[default]
+    Repeat,
+    /// `CLAMP_TO_EDGE` (33071).
+    ClampToEdge,
+    /// `MIRRORED_REPEAT` (33648).
+    MirroredRepeat,
+}
+
+/// A glTF sampler; [`Sampler::default`] is what a texture without a sampler uses (repeat,
+/// linear magnification, trilinear minification).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Sampler {
+    /// Magnification filter.
+    pub mag_filter: MagFilter,
+    /// Minification filter.
+    pub min_filter: MinFilter,
+    /// Wrap along u (`wrapS`).
+    pub wrap_s: Wrap,
+    /// Wrap along v (`wrapT`).
+    pub wrap_t: Wrap,
+}
+
+fn address(wrap: Wrap) -> AddressMode {
+    match wrap {
+        Wrap::Repeat => AddressMode::Repeat,
+        Wrap::ClampToEdge => AddressMode::ClampToEdge,
+        Wrap::MirroredRepeat => AddressMode::MirrorRepeat,
+    }
+}
+
+impl Sampler {
+    /// The equivalent `barytex_texture` sampler. Minification without mipmaps
+    /// (`NEAREST`/`LINEAR`) samples only level 0, expressed as a LOD clamp of 0.
+    #[must_use]
+    pub fn to_descriptor(&self) -> SamplerDescriptor {
+        let mag_filter = match self.mag_filter {
+            MagFilter::Nearest => FilterMode::Nearest,
+            MagFilter::Linear => FilterMode::Linear,
+        };
+        let (min_filter, mipmap_filter, mipmapped) = match self.min_filter {
+            MinFilter::Nearest => (FilterMode::Nearest, MipmapFilterMode::Nearest, false),
+            MinFilter::Linear => (FilterMode::Linear, MipmapFilterMode::Nearest, false),
+            MinFilter::NearestMipmapNearest => {
+                (FilterMode::Nearest, MipmapFilterMode::Nearest, true)
+            }
+            MinFilter::LinearMipmapNearest => (FilterMode::Linear, MipmapFilterMode::Nearest, true),
+            MinFilter::NearestMipmapLinear => (FilterMode::Nearest, MipmapFilterMode::Linear, true),
+            MinFilter::LinearMipmapLinear => (FilterMode::Linear, MipmapFilterMode::Linear, true),
+        };
+        SamplerDescriptor {
+            address_mode_u: address(self.wrap_s),
+            address_mode_v: address(self.wrap_t),
+            mag_filter,
+            min_filter,
+            mipmap_filter,
+            lod_max_clamp: if mipmapped { 32.0 } else { 0.0 },
+            ..SamplerDescriptor::default()
+        }
+    }
+
+    /// Reads `/samplers/i`. Unknown enum values fall back to the default with a warning (the
+    /// validator treats them as warnings too, for forward compatibility).
+    pub(crate) fn parse(obj: Obj<'_>, warnings: &mut Vec<String>) -> Result<Self, SceneError> {
+        let mut sampler = Self::default();
+        if let Some(v) = obj.opt_u64("magFilter")? {
+            sampler.mag_filter = match v {
+                9728 => MagFilter::Nearest,
+                9729 => MagFilter::Linear,
+                other => {
+                    warnings.push(format!(
+                        "{}: unknown magFilter {other}",
+                        obj.at("magFilter")
+                    ));
+                    MagFilter::Linear
+                }
+            };
+        }
+        if let Some(v) = obj.opt_u64("minFilter")? {
+            sampler.min_filter = match v {
+                9728 => MinFilter::Nearest,
+                9729 => MinFilter::Linear,
+                9984 => MinFilter::NearestMipmapNearest,
+                9985 => MinFilter::LinearMipmapNearest,
+                9986 => MinFilter::NearestMipmapLinear,
+                9987 => MinFilter::LinearMipmapLinear,
+                other => {
+                    warnings.push(format!(
+                        "{}: unknown minFilter {other}",
+                        obj.at("minFilter")
+                    ));
+                    MinFilter::LinearMipmapLinear
+                }
+            };
+        }
+        let wrap = |key: &str, warnings: &mut Vec<String>| -> Result<Wrap, SceneError> {
+            Ok(match obj.opt_u64(key)? {
+                None | Some(10497) => Wrap::Repeat,
+                Some(33071) => Wrap::ClampToEdge,
+                Some(33648) => Wrap::MirroredRepeat,
+                Some(other) => {
+                    warnings.push(format!("{}: unknown wrap mode {other}", obj.at(key)));
+                    Wrap::Repeat
+                }
+            })
+        };
+        sampler.wrap_s = wrap("wrapS", warnings)?;
+        sampler.wrap_t = wrap("wrapT", warnings)?;
+        Ok(sampler)
+    }
+}

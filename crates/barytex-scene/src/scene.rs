@@ -1,0 +1,131 @@
+//! The flattened scene a renderer consumes: mesh instances with world matrices, cameras, lights,
+//! materials, textures and the decoded images, plus statistics on what was loaded and skipped.
+
+use std::sync::Arc;
+
+use barytex_texture::load::AnyTexture2d;
+use glam::Mat4;
+
+use crate::camera::SceneCamera;
+use crate::light::SceneLight;
+use crate::material::Material;
+use crate::mesh::Mesh;
+use crate::sampler::Sampler;
+
+/// One placement of a mesh in the world. Instances of the same mesh share its decoded data.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshInstance {
+    /// Index of the node carrying the mesh.
+    pub node: usize,
+    /// The node's name, if any.
+    pub node_name: Option<String>,
+    /// Object-to-world matrix (parent · child, composed from the scene root).
+    pub world: Mat4,
+    /// The world matrix mirrors (determinant < 0): front faces turn clockwise, so a renderer must
+    /// swap its winding test for this instance (glTF 2.0 §3.7.4).
+    pub flips_winding: bool,
+    /// The mesh (shared between instances).
+    pub mesh: Arc<Mesh>,
+}
+
+impl MeshInstance {
+    /// Triangles in this instance.
+    #[must_use]
+    pub fn triangle_count(&self) -> usize {
+        self.mesh.primitives.iter().map(|p| p.triangles.len()).sum()
+    }
+}
+
+/// A texture: an image and how to sample it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Texture {
+    /// Index into [`Scene::images`]; `None` when the texture has no core source (e.g. only an
+    /// unsupported extension's).
+    pub image: Option<usize>,
+    /// The sampler (defaults when the texture has none).
+    pub sampler: Sampler,
+}
+
+/// An image slot: decoded in the colour spaces the scene's materials need, or not at all.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SceneImage {
+    /// The image's name, if any.
+    pub name: Option<String>,
+    /// Decoded as sRGB (used as a base colour or emissive texture).
+    pub srgb: Option<Arc<AnyTexture2d>>,
+    /// Decoded as linear data (normal, occlusion, metallic-roughness).
+    pub linear: Option<Arc<AnyTexture2d>>,
+}
+
+/// What the loader did.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct SceneStats {
+    /// Nodes visited in the chosen scene.
+    pub nodes_visited: usize,
+    /// Meshes decoded (used by the chosen scene).
+    pub meshes_loaded: usize,
+    /// Meshes in the document that the chosen scene does not use (validated, not decoded).
+    pub meshes_unused: usize,
+    /// Triangle primitives decoded.
+    pub primitives_loaded: usize,
+    /// Point and line primitives skipped.
+    pub primitives_skipped_non_triangle: usize,
+    /// Primitives skipped for lacking `POSITION` or having an unknown mode.
+    pub primitives_skipped_other: usize,
+    /// Triangles over the decoded meshes (each mesh once).
+    pub triangles: usize,
+    /// Triangles over all instances.
+    pub instanced_triangles: usize,
+    /// Image decodes performed (an image used as colour and as data counts twice).
+    pub images_decoded: usize,
+    /// Images no material of the chosen scene samples (checked, not decoded).
+    pub images_skipped: usize,
+}
+
+/// A loaded, flattened glTF scene.
+#[derive(Clone, Debug, Default)]
+pub struct Scene {
+    /// Which of the document's scenes this is (`None` when the document has no `scenes` and the
+    /// loader used every root node).
+    pub scene_index: Option<usize>,
+    /// The scene's name, if any.
+    pub name: Option<String>,
+    /// How many scenes the document defines.
+    pub scene_count: usize,
+    /// Every mesh placement, in depth-first node order.
+    pub instances: Vec<MeshInstance>,
+    /// Cameras placed by the scene's nodes.
+    pub cameras: Vec<SceneCamera>,
+    /// Lights placed by the scene's nodes.
+    pub lights: Vec<SceneLight>,
+    /// The document's materials, by index.
+    pub materials: Vec<Material>,
+    /// The document's textures, by index.
+    pub textures: Vec<Texture>,
+    /// The document's images, by index (decoded only where the scene uses them).
+    pub images: Vec<SceneImage>,
+    /// Non-fatal findings (skipped primitives, unknown enum values, extra bytes, …).
+    pub warnings: Vec<String>,
+    /// What was loaded and skipped.
+    pub stats: SceneStats,
+}
+
+impl Scene {
+    /// Triangles over all instances.
+    #[must_use]
+    pub fn triangle_count(&self) -> usize {
+        self.instances
+            .iter()
+            .map(MeshInstance::triangle_count)
+            .sum()
+    }
+
+    /// The material a primitive uses (the glTF default material for `None`).
+    #[must_use]
+    pub fn material(&self, index: Option<usize>) -> Material {
+        index
+            .and_then(|i| self.materials.get(i))
+            .cloned()
+            .unwrap_or_default()
+    }
+}
