@@ -1,13 +1,18 @@
 //! The `barytex` command.
 //!
-//! - `barytex` (what `cargo run --release` runs): a demo of the seed's worked examples, checked
-//!   against exact arithmetic, until the renderer exists.
+//! - `barytex` (what `cargo run --release` runs): renders the built-in demo scene to
+//!   `barytex-demo.png` and prints where it went and how long each stage took (`barytex demo`
+//!   takes the render options).
+//! - `barytex render FILE [--scene N] [--camera N|auto] [--size WxH] [--shading unlit|phong]
+//!   [--filter …] [--aa …] [--threads N] [-o OUT.png] [--print-camera] [--stats]`: a glTF/GLB.
+//! - `barytex examples`: the seed's worked examples, checked against exact arithmetic.
 //! - `barytex report [--out DIR] [--quick]`: the speed-vs-error report of the interpolation
 //!   methods, written as Markdown (`DIR/README.md`, `DIR/interp.md`; default `docs/report`).
 //! - `barytex uv-layout --mesh sphere|equal-area-sphere|torus|cylinder|cube|plane [--size N]
 //!   [--out FILE.png]`: a parametric mesh's uv layout (default `docs/uv-layout/<mesh>.png`).
 
 mod demo;
+mod render_cmd;
 mod report;
 mod timing;
 mod uv_layout;
@@ -17,20 +22,123 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand};
 
-/// barytex: interpolation math, exact where a sign decides topology.
+/// barytex: interpolation math and texturing, exact where a sign decides topology.
 ///
-/// Without a subcommand, prints a demo of the seed's worked examples.
+/// Without a subcommand, renders the built-in demo scene to barytex-demo.png.
 #[derive(Debug, Parser)]
 #[command(name = "barytex", version, about, long_about = None)]
 struct Cli {
-    /// What to do; the demo when absent.
+    /// What to do; the demo scene when absent.
     #[command(subcommand)]
     command: Option<Command>,
+}
+
+/// How to render (shared by `render` and `demo`).
+#[derive(Debug, Args)]
+struct RenderArgs {
+    /// Image size, WIDTHxHEIGHT.
+    #[arg(long, default_value = "960x540", value_parser = render_cmd::parse_size)]
+    size: (u32, u32),
+    /// `auto` (the documented automatic camera) or a camera index; default: the scene's first
+    /// camera, else auto.
+    #[arg(long, value_parser = render_cmd::parse_camera)]
+    camera: Option<barytex_scene::render::CameraChoice>,
+    /// unlit (glTF's unlit model: base colour × texture × vertex colour) or phong.
+    #[arg(long, default_value = "phong", value_parser = render_cmd::parse_shading)]
+    shading: barytex_scene::render::Shading,
+    /// file (the glTF samplers), nearest, bilinear, trilinear, aniso:N or ewa.
+    #[arg(long, value_parser = render_cmd::parse_filter)]
+    filter: Option<barytex_scene::render::Filter>,
+    /// none, ssaa:N (N×N grid), jitter:N (N×N, per pixel), msaa:N (1, 2, 4, 8, 16) or
+    /// adaptive:N (up to N samples where needed).
+    #[arg(long, value_parser = render_cmd::parse_aa)]
+    aa: Option<barytex_scene::render::AntiAliasing>,
+    /// Worker threads (default: all cores); the image is the same for any count.
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Print the view and projection matrices.
+    #[arg(long)]
+    print_camera: bool,
+    /// Print what the loader and renderer did (textures, mips, fragments, skipped objects).
+    #[arg(long)]
+    stats: bool,
+}
+
+/// Options of `barytex render`.
+#[derive(Debug, Args)]
+struct RenderFileArgs {
+    /// The glTF (.gltf) or GLB (.glb) file.
+    file: PathBuf,
+    /// Which of the file's scenes (default: its `scene`, else the first).
+    #[arg(long)]
+    scene: Option<usize>,
+    /// The PNG to write.
+    #[arg(short, long, default_value = "barytex-render.png")]
+    out: PathBuf,
+    #[command(flatten)]
+    render: RenderArgs,
+}
+
+/// Options of `barytex demo`.
+#[derive(Debug, Args)]
+struct DemoArgs {
+    /// The PNG to write.
+    #[arg(short, long, default_value = "barytex-demo.png")]
+    out: PathBuf,
+    #[command(flatten)]
+    render: RenderArgs,
+}
+
+impl RenderArgs {
+    /// The demo's defaults: anisotropic filtering and 4× MSAA.
+    fn demo_defaults() -> Self {
+        Self {
+            size: (960, 540),
+            camera: None,
+            shading: barytex_scene::render::Shading::Phong,
+            filter: Some(barytex_scene::render::Filter::Anisotropic(8)),
+            aa: Some(barytex_scene::render::AntiAliasing::Msaa(4)),
+            threads: None,
+            print_camera: false,
+            stats: false,
+        }
+    }
+
+    fn options(
+        self,
+        file: Option<PathBuf>,
+        scene: Option<usize>,
+        out: PathBuf,
+    ) -> render_cmd::Options {
+        render_cmd::Options {
+            file,
+            scene,
+            render: barytex_scene::render::RenderOptions {
+                width: self.size.0,
+                height: self.size.1,
+                camera: self.camera.unwrap_or_default(),
+                shading: self.shading,
+                filter: self.filter.unwrap_or_default(),
+                anti_aliasing: self.aa.unwrap_or_default(),
+                ..barytex_scene::render::RenderOptions::default()
+            },
+            threads: self.threads,
+            out,
+            print_camera: self.print_camera,
+            stats: self.stats,
+        }
+    }
 }
 
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 enum Command {
+    /// Render the built-in demo scene (what `barytex` without arguments does).
+    Demo(DemoArgs),
+    /// Render a glTF 2.0 or GLB file to a PNG.
+    Render(RenderFileArgs),
+    /// Print the seed's worked examples, checked against exact arithmetic.
+    Examples,
     /// Measure every method's speed and error on the same inputs and write the Markdown report.
     Report(ReportArgs),
     /// Draw a parametric mesh's uv layout (wireframe over a checker, seams in red) to a PNG.
@@ -73,7 +181,24 @@ fn command_line() -> String {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        None => demo::run(),
+        None => render_cmd::run(&RenderArgs::demo_defaults().options(
+            None,
+            None,
+            PathBuf::from("barytex-demo.png"),
+        )),
+        Some(Command::Demo(args)) => {
+            let defaults = RenderArgs::demo_defaults();
+            let render = RenderArgs {
+                filter: args.render.filter.or(defaults.filter),
+                aa: args.render.aa.or(defaults.aa),
+                ..args.render
+            };
+            render_cmd::run(&render.options(None, None, args.out))
+        }
+        Some(Command::Render(args)) => {
+            render_cmd::run(&args.render.options(Some(args.file), args.scene, args.out))
+        }
+        Some(Command::Examples) => demo::run(),
         Some(Command::Report(args)) => report::run(&report::Options {
             out: args.out,
             quick: args.quick,

@@ -1,4 +1,5 @@
-//! End-to-end tests of the `barytex` command: the demo and `report --quick`.
+//! End-to-end tests of the `barytex` command: the demo scene, `render`, `examples`, `report
+//! --quick` and `uv-layout`.
 #![allow(clippy::unwrap_used)]
 
 use std::path::PathBuf;
@@ -16,8 +17,8 @@ fn temp_dir(name: &str) -> PathBuf {
 }
 
 #[test]
-fn demo_prints_the_seed_examples() {
-    let output = barytex().output().unwrap();
+fn examples_prints_the_seed_examples() {
+    let output = barytex().arg("examples").output().unwrap();
     assert!(output.status.success(), "exit status {:?}", output.status);
     let stdout = String::from_utf8(output.stdout).unwrap();
     assert!(stdout.contains("Examples 7 and 9"), "{stdout}");
@@ -76,6 +77,18 @@ fn quick_report_writes_every_family() {
     ] {
         assert!(texture.contains(heading), "missing {heading:?}");
     }
+    let raster = std::fs::read_to_string(dir.join("raster.md")).unwrap();
+    assert!(index.contains("raster.md"), "{index}");
+    for heading in [
+        "## Rasterizer",
+        "### perspective interpolation",
+        "affine spans of 16 px",
+        "### anti-aliasing on a Siemens star",
+        "MSAA 4",
+        "adaptive",
+    ] {
+        assert!(raster.contains(heading), "missing {heading:?}");
+    }
     let strip = std::fs::read(dir.join("texture-filters-grazing.png")).unwrap();
     assert!(strip.starts_with(b"\x89PNG"), "not a PNG");
     // One progress line per family on stderr.
@@ -123,4 +136,97 @@ fn uv_layout_writes_a_png_of_the_requested_size() {
     assert!(!refused.status.success());
     assert!(String::from_utf8_lossy(&refused.stderr).contains("out of range"));
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `barytex` with no arguments renders the demo scene into the current directory and says where
+/// the image went and how long each stage took.
+#[test]
+fn no_arguments_render_the_demo_scene() {
+    let dir = temp_dir("demo");
+    std::fs::create_dir_all(&dir).unwrap();
+    let output = barytex().current_dir(&dir).output().unwrap();
+    assert!(output.status.success(), "exit status {:?}", output.status);
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    assert!(stdout.contains("stages: load"), "{stdout}");
+    let png = dir.join("barytex-demo.png");
+    assert!(
+        stdout.contains("wrote ") && stdout.contains("barytex-demo.png"),
+        "{stdout}"
+    );
+    let bytes = std::fs::read(&png).expect("the demo image");
+    let image = barytex_texture::load::load_from_memory(
+        &bytes,
+        barytex_texture::load::ColorSpace::Srgb,
+        &barytex_texture::Limits::default(),
+    )
+    .expect("a PNG");
+    let barytex_texture::load::AnyTexture2d::Srgba8(image) = image else {
+        panic!("an 8-bit RGBA PNG");
+    };
+    assert_eq!(image.size(), (960, 540));
+}
+
+/// `barytex render` on a sample model with every option spelled out; bad options are clear
+/// errors with a failing exit status, not panics.
+#[test]
+fn render_writes_the_file_and_rejects_bad_options() {
+    let fixtures = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/fixtures/gltf");
+    let model = fixtures.join("BoxVertexColors/glTF-Binary/BoxVertexColors.glb");
+    if !model.is_file() {
+        println!("note: fixture {} absent, test skipped", model.display());
+        return;
+    }
+    let dir = temp_dir("render");
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("box.png");
+    let output = barytex()
+        .arg("render")
+        .arg(&model)
+        .args([
+            "--size",
+            "64x48",
+            "--camera",
+            "auto",
+            "--shading",
+            "unlit",
+            "--filter",
+            "aniso:4",
+            "--aa",
+            "msaa:4",
+            "--threads",
+            "2",
+            "--print-camera",
+            "--stats",
+            "-o",
+        ])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{output:?}");
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        stdout.contains("automatic camera") && stdout.contains("projection"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("fragments shaded"), "{stdout}");
+    assert!(out.is_file());
+    for bad in [
+        ["--size", "0x10"],
+        ["--aa", "msaa:3"],
+        ["--filter", "fancy"],
+        ["--camera", "7"],
+    ] {
+        let output = barytex()
+            .arg("render")
+            .arg(&model)
+            .args(bad)
+            .arg("-o")
+            .arg(dir.join("bad.png"))
+            .output()
+            .unwrap();
+        assert!(!output.status.success(), "{bad:?} should fail");
+        let stderr = String::from_utf8(output.stderr).unwrap();
+        assert!(!stderr.contains("panicked"), "{bad:?}: {stderr}");
+        assert!(!stderr.is_empty(), "{bad:?}: no message");
+    }
 }

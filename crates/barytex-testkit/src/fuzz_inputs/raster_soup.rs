@@ -4,16 +4,18 @@
 //!
 //! Layout: byte 0 state (bits 0–1 cull: none, back, front; bit 2 clockwise front; bit 3 depth
 //! test; bit 4 affine; bit 5 blend over; bit 6 scissor), bytes 1–4 scissor x0, y0, x1, y1 (mod 17),
-//! byte 5 mode: kind 1 = the words are pixel positions on the 1/256 grid (a watertight fan around
-//! the target's centre is drawn instead of the soup), then 4 words (x, y, z, w as f32 bit
+//! byte 5 mode: bits 0–2 kind 1 = the words are pixel positions on the 1/256 grid (a watertight
+//! fan around the target's centre is drawn instead of the soup); bits 3–5 samples (1 sample, MSAA
+//! standard 4, MSAA standard 16, 3×3 per-pixel jitter shaded per sample, 2×2 regular shaded per
+//! sample, 4 standard with affine spans of 8); then 4 words (x, y, z, w as f32 bit
 //! patterns) per vertex, 3 vertices per triangle.
 
 use std::fmt::Write as _;
 use std::sync::atomic::{AtomicU32, Ordering};
 
 use barytex_raster::{
-    Blend, CullMode, Fragment, Framebuffer, FrontFace, Interpolation, PipelineState, Scissor,
-    Shader, draw,
+    Blend, CullMode, Fragment, Framebuffer, FrontFace, Interpolation, PipelineState, SamplePattern,
+    Scissor, Shader, draw,
 };
 use barytex_texture::Limits;
 use barytex_texture::sampler::CompareFunction;
@@ -27,7 +29,10 @@ pub const SIDE: u32 = 16;
 pub const RASTER_SOUP_LEN: usize = 6 + 8 * 3 * 16;
 
 struct Recorder {
+    /// Fragments per pixel.
     counts: Vec<AtomicU32>,
+    /// Coverage per pixel and sample (32 slots per pixel).
+    samples: Vec<AtomicU32>,
 }
 
 impl Shader for Recorder {
@@ -40,14 +45,22 @@ impl Shader for Recorder {
         let i = (f.pixel.y * SIDE + f.pixel.x) as usize;
         // An index outside the target would panic here: that is the "no write outside" check.
         self.counts[i].fetch_add(1, Ordering::Relaxed);
+        for k in 0..32 {
+            if f.coverage & (1 << k) != 0 {
+                self.samples[i * 32 + k].fetch_add(1, Ordering::Relaxed);
+            }
+        }
         let (dx, dy) = (f.ddx(), f.ddy());
         Some(Vec4::new(f.varying.x, dx.x, dy.y, 1.0))
     }
 }
 
-/// The decoded input: state, vertices, indices, whether it is the watertight fan.
+/// The decoded input: state, sample pattern, vertices, indices, whether it is the watertight
+/// fan.
 #[must_use]
-pub fn raster_soup_input(bytes: &[u8]) -> (PipelineState, Vec<Vec4>, Vec<u32>, bool) {
+pub fn raster_soup_input(
+    bytes: &[u8],
+) -> (PipelineState, SamplePattern, Vec<Vec4>, Vec<u32>, bool) {
     let byte = |i: usize| bytes.get(i).copied().unwrap_or(0);
     let s = byte(0);
     let mut state = PipelineState {
@@ -84,6 +97,20 @@ pub fn raster_soup_input(bytes: &[u8]) -> (PipelineState, Vec<Vec4>, Vec<u32>, b
             y1: c(4),
         });
     }
+    let (pattern, sample_shading) = match (byte(5) >> 3) & 7 {
+        1 => (SamplePattern::Standard { count: 4 }, false),
+        2 => (SamplePattern::Standard { count: 16 }, false),
+        3 => (SamplePattern::Jittered { n: 3, seed: 9 }, true),
+        4 => (SamplePattern::Regular { n: 2 }, true),
+        5 => {
+            if state.interpolation == Interpolation::Perspective {
+                state.interpolation = Interpolation::AffineSpans { span: 8 };
+            }
+            (SamplePattern::Standard { count: 4 }, false)
+        }
+        _ => (SamplePattern::CENTRE, false),
+    };
+    state.sample_shading = sample_shading;
     let fan = byte(5) & 7 == 1;
     let count = bytes.len().saturating_sub(6) / 16;
     let words = |v: usize| -> [u32; 4] {
@@ -131,28 +158,29 @@ pub fn raster_soup_input(bytes: &[u8]) -> (PipelineState, Vec<Vec4>, Vec<u32>, b
             .collect();
         state.cull = CullMode::None;
         state.depth_compare = None;
-        return (state, vertices, indices, true);
+        return (state, pattern, vertices, indices, true);
     }
     let vertices: Vec<Vec4> = (0..count.min(24))
         .map(|v| Vec4::from_array(words(v).map(f32::from_bits)))
         .collect();
     let indices = (0..vertices.len() as u32).collect();
-    (state, vertices, indices, false)
+    (state, pattern, vertices, indices, false)
 }
 
 /// The invariants: no panic; no fragment outside the target or the scissor; every triangle
-/// accounted for in the statistics; a fan of non-overlapping triangles covers each pixel at most
-/// once (watertight, no double coverage) and every pixel strictly inside its hull.
+/// accounted for in the statistics; a fan of non-overlapping triangles covers each sample at most
+/// once (watertight, no double coverage).
 ///
 /// # Errors
 /// A description of the first violated invariant.
 pub fn check_raster_soup(bytes: &[u8]) -> Result<(), String> {
-    let (state, vertices, indices, fan) = raster_soup_input(bytes);
+    let (state, pattern, vertices, indices, fan) = raster_soup_input(bytes);
     let recorder = Recorder {
         counts: (0..SIDE * SIDE).map(|_| AtomicU32::new(0)).collect(),
+        samples: (0..SIDE * SIDE * 32).map(|_| AtomicU32::new(0)).collect(),
     };
-    let mut fb =
-        Framebuffer::new(SIDE, SIDE, Vec4::ZERO, &Limits::default()).map_err(|e| e.to_string())?;
+    let mut fb = Framebuffer::multisampled(SIDE, SIDE, pattern, Vec4::ZERO, &Limits::default())
+        .map_err(|e| e.to_string())?;
     let stats = draw(&mut fb, &recorder, &state, &vertices, &indices);
     if stats.triangles_in != (indices.len() / 3) as u64 {
         return Err(format!("{stats:?} for {} indices", indices.len()));
@@ -168,8 +196,13 @@ pub fn check_raster_soup(bytes: &[u8]) -> Result<(), String> {
                 "pixel ({x}, {y}) written outside the scissor {s:?}"
             ));
         }
-        if fan && c > 1 {
-            return Err(format!("pixel ({x}, {y}) covered {c} times by a fan"));
+        for k in 0..32 {
+            let n = recorder.samples[i * 32 + k].load(Ordering::Relaxed);
+            if fan && n > 1 {
+                return Err(format!(
+                    "sample {k} of pixel ({x}, {y}) covered {n} times by a fan ({pattern:?})"
+                ));
+            }
         }
     }
     Ok(())
@@ -178,9 +211,9 @@ pub fn check_raster_soup(bytes: &[u8]) -> Result<(), String> {
 /// A failing input as a Rust block for a regression test.
 #[must_use]
 pub fn raster_soup_code(bytes: &[u8]) -> String {
-    let (state, vertices, indices, fan) = raster_soup_input(bytes);
+    let (state, pattern, vertices, indices, fan) = raster_soup_input(bytes);
     let mut out = String::from("{\n");
-    let _ = writeln!(out, "    // {state:?}, fan = {fan}");
+    let _ = writeln!(out, "    // {state:?}, {pattern:?}, fan = {fan}");
     let _ = writeln!(out, "    // vertices {vertices:?}, indices {indices:?}");
     let _ = writeln!(out, "    let bytes: &[u8] = &{bytes:?};");
     out.push_str("    assert_eq!(check_raster_soup(bytes), Ok(()));\n}");

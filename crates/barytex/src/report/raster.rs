@@ -63,25 +63,32 @@ fn timed<T: Send>(runs: usize, mut render: impl FnMut() -> T + Send) -> (f64, T)
     (median(&mut times), last.expect("at least one run"))
 }
 
-/// The perspective family: the ground plane y = −1 from the origin looking down −z (60°
-/// vertical field of view, horizon across the middle), uv = (x/4 + ½, z/4).
+/// The perspective family: the slanted plane x + y = −1.2 from the origin looking down −z (60°
+/// vertical field of view), parametrised by `s` across and `z` along the view, uv = (s/4 + ½,
+/// z/4). Depth varies along rows and columns (on a level floor each row has one depth, and
+/// affine spans would be exact).
 fn perspective_table(settings: Settings, runs: usize) -> Table {
     let quick = settings.random < 1024;
     let (w, h) = if quick { (128_u32, 96_u32) } else { (512, 384) };
     let fov = 60_f32.to_radians();
     let aspect = w as f32 / h as f32;
     let shader = UvShader {
-        mvp: perspective(fov, aspect, 0.1, 4000.0),
+        mvp: perspective(fov, aspect, 0.1, 400.0),
     };
-    let (x_max, z_near, z_far) = (1000.0_f32, -0.5_f32, -1000.0_f32);
-    let uv = |p: Vec3| Vec2::new(p.x / 4.0 + 0.5, p.z / 4.0);
-    let corners = [
-        Vec3::new(-x_max, -1.0, z_near),
-        Vec3::new(x_max, -1.0, z_near),
-        Vec3::new(x_max, -1.0, z_far),
-        Vec3::new(-x_max, -1.0, z_far),
+    let (s_max, z_near, z_far) = (200.0_f32, -0.5_f32, -100.0_f32);
+    let r = std::f32::consts::FRAC_1_SQRT_2;
+    let on_plane = |s: f32, z: f32| {
+        (
+            Vec3::new(-0.6 + s * r, -0.6 - s * r, z),
+            Vec2::new(s / 4.0 + 0.5, z / 4.0),
+        )
+    };
+    let vertices = vec![
+        on_plane(-s_max, z_near),
+        on_plane(s_max, z_near),
+        on_plane(s_max, z_far),
+        on_plane(-s_max, z_far),
     ];
-    let vertices: Vec<(Vec3, Vec2)> = corners.iter().map(|&p| (p, uv(p))).collect();
     let indices = [0, 1, 2, 0, 2, 3];
     // The exact uv at each pixel centre, where the ray meets the quad.
     let tan = f64::from(fov / 2.0).tan();
@@ -89,12 +96,13 @@ fn perspective_table(settings: Settings, runs: usize) -> Table {
         let ndc_x = (f64::from(x) + 0.5) / f64::from(w) * 2.0 - 1.0;
         let ndc_y = 1.0 - (f64::from(y) + 0.5) / f64::from(h) * 2.0;
         let d = DVec3::new(ndc_x * f64::from(aspect) * tan, ndc_y * tan, -1.0);
-        if d.y >= 0.0 {
+        if d.x + d.y >= 0.0 {
             return None;
         }
-        let p = d * (-1.0 / d.y);
-        (p.x.abs() < f64::from(x_max) && p.z < f64::from(z_near) && p.z > f64::from(z_far))
-            .then(|| (p.x / 4.0 + 0.5, p.z / 4.0))
+        let p = d * (-1.2 / (d.x + d.y));
+        let s = (p.x - p.y) * std::f64::consts::FRAC_1_SQRT_2;
+        (s.abs() < f64::from(s_max) && p.z < f64::from(z_near) && p.z > f64::from(z_far))
+            .then(|| (s / 4.0 + 0.5, p.z / 4.0))
     };
     let methods = [
         ("perspective-correct", Interpolation::Perspective),
@@ -150,10 +158,11 @@ fn perspective_table(settings: Settings, runs: usize) -> Table {
         });
     }
     Table {
-        title: "perspective interpolation on a receding ground plane".to_owned(),
+        title: "perspective interpolation on a receding slanted plane".to_owned(),
         description: format!(
-            "A {w}×{h} view of the plane y = −1 from the origin (60° vertical field of view, the \
-             horizon across the middle), uv = (x/4 + ½, z/4) on a 256² texture: the error is \
+            "A {w}×{h} view of the slanted plane x + y = −1.2 from the origin (60° vertical field \
+             of view; depth varies along rows, so spans are not trivially exact), uv = (s/4 + ½, \
+             z/4) with s across the plane, z ∈ [−100, −0.5], on a 256² texture: the error is \
              |Δuv| in **texels** against the exact ray–plane intersection at each covered pixel \
              centre (f64); time is ns per **pixel of the frame** (the fragment stage only \
              outputs the uv, so interpolation dominates), median of {runs} frames, one thread."
@@ -286,15 +295,9 @@ fn anti_aliasing_table(settings: Settings, runs: usize) -> (Table, String) {
         (
             "supersampling 4×4 regular by 16 accumulated passes",
             Box::new(|| {
-                let fb = render_supersampled(
-                    w,
-                    h,
-                    black,
-                    SamplePattern::Regular { n: 4 },
-                    limits,
-                    pass,
-                )
-                .expect("small");
+                let fb =
+                    render_supersampled(w, h, black, SamplePattern::Regular { n: 4 }, limits, pass)
+                        .expect("small");
                 (fb, 16.0)
             }),
         ),

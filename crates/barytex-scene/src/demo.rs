@@ -1,0 +1,287 @@
+//! The built-in demo scene (what `barytex` renders with no arguments), built in code: no files.
+//!
+//! It shows the seeds at a glance: a checkerboard floor receding to the horizon (where aliasing,
+//! mipmaps and anisotropic filtering differ most), a sphere with the equirectangular mapping, a
+//! capped cylinder with the cylindrical mapping, a torus with its (u, v) parametrisation, each
+//! with a texture that makes the mapping's distortion and seams visible; a sun, a point light
+//! and a spot light.
+
+use std::sync::Arc;
+
+use barytex_texture::load::AnyTexture2d;
+use barytex_texture::{Srgba8, Texture2d};
+use glam::{Mat3, Mat4, Quat, Vec3};
+
+use crate::camera::{Projection, SceneCamera};
+use crate::light::{Light, LightKind, SceneLight};
+use crate::material::{Material, TextureRef};
+use crate::mesh::{Mesh, Primitive};
+use crate::sampler::{MagFilter, MinFilter, Sampler, Wrap};
+use crate::scene::{MeshInstance, Scene, SceneImage, Texture};
+use crate::topology::Topology;
+
+/// A procedural sRGB image.
+fn image(side: u32, f: impl Fn(u32, u32) -> [u8; 3]) -> SceneImage {
+    // 512² at most: within the default limits; were it refused, the object is drawn untextured.
+    let texture = Texture2d::from_fn(side, side, |x, y| {
+        let [r, g, b] = f(x, y);
+        Srgba8([r, g, b, 255])
+    })
+    .ok();
+    SceneImage {
+        name: None,
+        srgb: texture.map(|t| Arc::new(AnyTexture2d::Srgba8(t))),
+        linear: None,
+    }
+}
+
+fn checker(side: u32, square: u32, a: [u8; 3], b: [u8; 3]) -> SceneImage {
+    image(side, move |x, y| {
+        if (x / square + y / square).is_multiple_of(2) {
+            a
+        } else {
+            b
+        }
+    })
+}
+
+/// Latitude bands and meridians: shows the equirectangular mapping's pinching at the poles.
+fn globe(side: u32) -> SceneImage {
+    image(side, |x, y| {
+        let band = y * 8 / side;
+        let meridian = x % (side / 12) < 2 || y % (side / 6) < 2;
+        if meridian {
+            [250, 250, 240]
+        } else if band.is_multiple_of(2) {
+            [40, 110, 200]
+        } else {
+            [60, 170, 90]
+        }
+    })
+}
+
+/// Diagonal stripes: show a mapping's shear and the seam where u wraps.
+fn stripes(side: u32) -> SceneImage {
+    image(side, |x, y| {
+        if ((x + y) / (side / 16)).is_multiple_of(2) {
+            [230, 150, 40]
+        } else {
+            [120, 40, 30]
+        }
+    })
+}
+
+fn repeat_trilinear() -> Sampler {
+    Sampler {
+        mag_filter: MagFilter::Linear,
+        min_filter: MinFilter::LinearMipmapLinear,
+        wrap_s: Wrap::Repeat,
+        wrap_t: Wrap::Repeat,
+    }
+}
+
+fn primitive(mesh: barytex_uv::mesh::Mesh, material: usize, uv_scale: f32) -> Primitive {
+    Primitive {
+        positions: mesh.positions,
+        normals: Some(mesh.normals),
+        tangents: Some(mesh.tangents),
+        tex_coords0: Some(mesh.uvs.iter().map(|&uv| uv * uv_scale).collect()),
+        tex_coords1: None,
+        colors0: None,
+        triangles: mesh.indices,
+        material: Some(material),
+        topology: Topology::Triangles,
+    }
+}
+
+fn instance(index: usize, name: &str, primitive: Primitive, world: Mat4) -> MeshInstance {
+    MeshInstance {
+        node: index,
+        node_name: Some(name.to_owned()),
+        world,
+        flips_winding: world.determinant() < 0.0,
+        mesh: Arc::new(Mesh {
+            index,
+            name: Some(name.to_owned()),
+            primitives: vec![primitive],
+        }),
+    }
+}
+
+fn textured(name: &str, texture: usize, roughness: f32) -> Material {
+    Material {
+        name: Some(name.to_owned()),
+        base_color_texture: Some(TextureRef {
+            texture,
+            image: Some(texture),
+            sampler: repeat_trilinear(),
+            tex_coord: 0,
+            transform: Mat3::IDENTITY,
+        }),
+        roughness_factor: roughness,
+        metallic_factor: 0.0,
+        ..Material::default()
+    }
+}
+
+fn light(node: usize, kind: LightKind, color: Vec3, intensity: f32, world: Mat4) -> SceneLight {
+    SceneLight {
+        node,
+        light_index: node,
+        light: Light {
+            name: None,
+            kind,
+            color,
+            intensity,
+            range: None,
+        },
+        world,
+        position: world.transform_point3(Vec3::ZERO),
+        direction: world.transform_vector3(Vec3::NEG_Z).normalize_or_zero(),
+    }
+}
+
+/// The camera-to-world matrix of an eye at `eye` looking at `target`, y up.
+fn look_at(eye: Vec3, target: Vec3) -> Mat4 {
+    let forward = (target - eye).normalize();
+    let right = forward.cross(Vec3::Y).normalize();
+    let up = right.cross(forward);
+    Mat4::from_cols(
+        right.extend(0.0),
+        up.extend(0.0),
+        (-forward).extend(0.0),
+        eye.extend(1.0),
+    )
+}
+
+/// The demo scene. (The generated meshes use fixed, valid resolutions; were one ever refused,
+/// it would be left empty rather than panic — the tests would catch it.)
+#[must_use]
+pub fn demo_scene() -> Scene {
+    let images = vec![
+        checker(256, 16, [225, 225, 225], [30, 30, 36]),
+        globe(512),
+        stripes(256),
+        checker(256, 32, [240, 200, 60], [40, 60, 150]),
+    ];
+    let textures = (0..images.len())
+        .map(|i| Texture {
+            image: Some(i),
+            sampler: repeat_trilinear(),
+        })
+        .collect();
+    let materials = vec![
+        textured("floor", 0, 0.6),
+        textured("globe", 1, 0.3),
+        textured("stripes", 2, 0.4),
+        textured("checker", 3, 0.35),
+    ];
+    let empty = barytex_uv::mesh::Mesh {
+        positions: Vec::new(),
+        normals: Vec::new(),
+        tangents: Vec::new(),
+        uvs: Vec::new(),
+        indices: Vec::new(),
+    };
+    let floor = barytex_uv::mesh::plane(8, 8).unwrap_or_else(|_| empty.clone());
+    let sphere = barytex_uv::mesh::sphere(64, 32).unwrap_or_else(|_| empty.clone());
+    let cylinder = barytex_uv::mesh::cylinder(48, 4, true).unwrap_or_else(|_| empty.clone());
+    let torus = barytex_uv::mesh::torus(72, 32, 1.0, 0.35).unwrap_or_else(|_| empty.clone());
+    let instances = vec![
+        // 80 × 80 units, the checker (16 squares a side) repeated 5 times: squares of 1 unit.
+        instance(
+            0,
+            "floor",
+            primitive(floor, 0, 40.0),
+            Mat4::from_scale(Vec3::new(40.0, 1.0, 40.0)),
+        ),
+        instance(
+            1,
+            "sphere",
+            primitive(sphere, 1, 1.0),
+            Mat4::from_translation(Vec3::new(-2.6, 1.0, 0.0)),
+        ),
+        instance(
+            2,
+            "cylinder",
+            primitive(cylinder, 2, 1.0),
+            Mat4::from_scale_rotation_translation(
+                Vec3::new(0.75, 1.0, 0.75),
+                Quat::from_rotation_y(0.6),
+                Vec3::new(0.0, 1.0, -1.2),
+            ),
+        ),
+        instance(
+            3,
+            "torus",
+            primitive(torus, 3, 1.0),
+            Mat4::from_scale_rotation_translation(
+                Vec3::splat(0.9),
+                Quat::from_rotation_x(1.1) * Quat::from_rotation_z(0.3),
+                Vec3::new(2.7, 1.1, 0.2),
+            ),
+        ),
+    ];
+    let lights = vec![
+        // A low sun from the left, behind the viewer.
+        light(
+            10,
+            LightKind::Directional,
+            Vec3::new(1.0, 0.95, 0.85),
+            2.2,
+            look_at(Vec3::new(-6.0, 8.0, 6.0), Vec3::ZERO),
+        ),
+        // A warm point light between the objects.
+        light(
+            11,
+            LightKind::Point,
+            Vec3::new(1.0, 0.7, 0.4),
+            18.0,
+            Mat4::from_translation(Vec3::new(0.0, 2.8, 1.8)),
+        ),
+        // A cool spot light on the torus.
+        light(
+            12,
+            LightKind::Spot {
+                inner_cone_angle: 0.25,
+                outer_cone_angle: 0.45,
+            },
+            Vec3::new(0.5, 0.7, 1.0),
+            60.0,
+            look_at(Vec3::new(4.5, 5.0, 3.0), Vec3::new(2.7, 1.0, 0.2)),
+        ),
+    ];
+    let cameras = vec![SceneCamera {
+        node: 20,
+        camera: 0,
+        name: Some("demo".to_owned()),
+        projection: Projection::Perspective {
+            yfov: 45_f32.to_radians(),
+            aspect_ratio: None,
+            znear: 0.1,
+            zfar: Some(200.0),
+        },
+        world: look_at(Vec3::new(0.0, 2.4, 7.5), Vec3::new(0.0, 0.9, 0.0)),
+    }];
+    let triangles: usize = instances.iter().map(MeshInstance::triangle_count).sum();
+    Scene {
+        scene_index: Some(0),
+        name: Some("barytex demo".to_owned()),
+        scene_count: 1,
+        instances,
+        cameras,
+        lights,
+        materials,
+        textures,
+        images,
+        warnings: Vec::new(),
+        stats: crate::scene::SceneStats {
+            meshes_loaded: 4,
+            primitives_loaded: 4,
+            triangles,
+            instanced_triangles: triangles,
+            images_decoded: 4,
+            ..crate::scene::SceneStats::default()
+        },
+    }
+}

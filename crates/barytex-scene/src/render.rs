@@ -1,0 +1,506 @@
+//! The scene renderer: a flattened [`Scene`] drawn by barytex-raster with barytex-texture's
+//! filters — cameras (the scene's or the automatic one), glTF materials (base colour, vertex
+//! colours, alpha modes, emission, occlusion, unlit), punctual lights with Blinn–Phong, and
+//! every anti-aliasing mode of the rasterizer.
+//!
+//! It models only what the image needs: textures are prepared only for materials the scene
+//! draws, mip chains are built only for textures that end up minified on screen, and the
+//! statistics say what was skipped.
+//!
+//! ```
+//! use barytex_scene::render::{render, RenderOptions};
+//! use barytex_scene::{load_slice, LoadOptions};
+//!
+//! let gltf = r#"{
+//!   "asset": {"version": "2.0"},
+//!   "buffers": [{"byteLength": 36, "uri":
+//!     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+//!   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+//!   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+//!                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+//!   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+//!   "nodes": [{"mesh": 0}],
+//!   "scenes": [{"nodes": [0]}]
+//! }"#;
+//! let scene = load_slice(gltf.as_bytes(), &LoadOptions::default())?;
+//! let out = render(&scene, &RenderOptions { width: 64, height: 48, ..RenderOptions::default() })?;
+//! assert!(out.stats.draw.fragments_shaded > 0);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+mod camera;
+mod material_shader;
+mod options;
+mod surface;
+mod textures;
+
+use std::fmt;
+use std::time::Instant;
+
+use barytex_raster::{
+    AdaptiveOptions, AdaptiveStats, Blend, CullMode, DrawStats, Framebuffer, FrontFace,
+    PipelineState, SamplePattern, Viewport, draw, render_adaptive, render_supersampled,
+};
+use barytex_texture::load::ColorSpace;
+use barytex_texture::{Limits, TextureError};
+use glam::{Mat3, Vec2, Vec3, Vec4};
+
+pub use camera::{CameraSource, RenderCamera, auto_camera, scene_bounds, scene_camera};
+pub use options::{AntiAliasing, CameraChoice, Filter, RenderOptions, Shading};
+
+use crate::light::LightKind;
+use crate::material::{AlphaMode, TextureRef};
+use crate::scene::Scene;
+use material_shader::{MaterialShader, ShaderMaterial, WorldLight, WorldPrimitive};
+use textures::Textures;
+
+/// Why a scene could not be rendered.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum RenderError {
+    /// The scene has no finite vertex to look at (and no camera was given).
+    NothingToFrame,
+    /// `--camera N` beyond the scene's cameras.
+    NoSuchCamera {
+        /// The index asked for.
+        index: usize,
+        /// Cameras in the scene.
+        count: usize,
+    },
+    /// A parameter out of range (size, sample count).
+    InvalidOption(String),
+    /// The target or a texture could not be allocated or built.
+    Texture(TextureError),
+}
+
+impl fmt::Display for RenderError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NothingToFrame => write!(f, "the scene has no finite vertex to frame"),
+            Self::NoSuchCamera { index, count } => {
+                write!(f, "camera {index} asked for, the scene has {count}")
+            }
+            Self::InvalidOption(why) => write!(f, "invalid render option: {why}"),
+            Self::Texture(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for RenderError {}
+
+impl From<TextureError> for RenderError {
+    fn from(e: TextureError) -> Self {
+        Self::Texture(e)
+    }
+}
+
+/// What a render did and how long each stage took.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct RenderStats {
+    /// Primitives drawn (opaque and masked first, then blended back to front).
+    pub primitives: usize,
+    /// Triangles submitted per pass.
+    pub triangles: usize,
+    /// Fragment and triangle counts, summed over passes.
+    pub draw: DrawStats,
+    /// Passes over the scene (more than one for accumulated and adaptive supersampling).
+    pub passes: u32,
+    /// Mean samples per pixel.
+    pub samples_per_pixel: f64,
+    /// The adaptive sampler's statistics, when it ran.
+    pub adaptive: Option<AdaptiveStats>,
+    /// Textures prepared (image × colour space × filter).
+    pub textures: usize,
+    /// Mip chains built.
+    pub mip_chains: usize,
+    /// Textures whose filter uses mipmaps but which are never minified (no chain built).
+    pub mips_skipped: usize,
+    /// Seconds preparing geometry, textures and mip chains.
+    pub prepare_seconds: f64,
+    /// Seconds rasterizing and shading (the two are interleaved per pixel).
+    pub draw_seconds: f64,
+}
+
+/// A rendered image with its camera and statistics.
+#[derive(Clone, Debug)]
+pub struct Rendered {
+    /// The image (linear light; `to_srgba8` encodes it).
+    pub image: Framebuffer,
+    /// The camera used.
+    pub camera: RenderCamera,
+    /// What happened.
+    pub stats: RenderStats,
+}
+
+/// One primitive ready to draw.
+struct DrawItem<'a> {
+    primitive: WorldPrimitive<'a>,
+    indices: Vec<u32>,
+    vertices: Vec<u32>,
+    material: ShaderMaterial,
+    double_sided: bool,
+    flips_winding: bool,
+    blended: bool,
+    /// View-space depth of the primitive's centre (for back-to-front blending).
+    depth: f32,
+    /// Per texture-coordinate set: the largest √(uv area / screen area) of its triangles.
+    uv_per_pixel: [f32; 2],
+}
+
+/// The camera for `options`.
+fn choose_camera(scene: &Scene, options: &RenderOptions) -> Result<RenderCamera, RenderError> {
+    let aspect = options.width as f32 / options.height as f32;
+    match options.camera {
+        CameraChoice::Index(index) => {
+            scene_camera(scene, index, aspect).ok_or(RenderError::NoSuchCamera {
+                index,
+                count: scene.cameras.len(),
+            })
+        }
+        CameraChoice::First if !scene.cameras.is_empty() => scene_camera(scene, 0, aspect)
+            .or_else(|| auto_camera(scene, aspect))
+            .ok_or(RenderError::NothingToFrame),
+        _ => auto_camera(scene, aspect).ok_or(RenderError::NothingToFrame),
+    }
+}
+
+/// √(uv area / screen area) maximised over the triangles, per texture-coordinate set.
+fn uv_per_pixel(
+    clip: &[Vec4],
+    uvs: [Option<&[Vec2]>; 2],
+    triangles: &[[u32; 3]],
+    size: Vec2,
+) -> [f32; 2] {
+    let mut out = [0.0_f32; 2];
+    for t in triangles {
+        let c = t.map(|i| clip.get(i as usize).copied().unwrap_or(Vec4::NAN));
+        if c.iter().any(|p| !p.is_finite() || p.w <= 0.0) {
+            continue;
+        }
+        let s = c.map(|p| Vec2::new(p.x / p.w, p.y / p.w) * size * 0.5);
+        let screen = (s[1] - s[0]).perp_dot(s[2] - s[0]).abs() * 0.5;
+        if screen < 1e-6 {
+            continue;
+        }
+        for (k, set) in uvs.iter().enumerate() {
+            if let Some(uv) = set {
+                let u = t.map(|i| uv.get(i as usize).copied().unwrap_or(Vec2::ZERO));
+                let area = (u[1] - u[0]).perp_dot(u[2] - u[0]).abs() * 0.5;
+                out[k] = out[k].max((area / screen).sqrt());
+            }
+        }
+    }
+    out
+}
+
+fn add_stats(total: &mut DrawStats, s: &DrawStats) {
+    total.triangles_in += s.triangles_in;
+    total.dropped_bad_index += s.dropped_bad_index;
+    total.dropped_non_finite += s.dropped_non_finite;
+    total.clipped_away += s.clipped_away;
+    total.clipped += s.clipped;
+    total.culled += s.culled;
+    total.degenerate += s.degenerate;
+    total.fragments_shaded += s.fragments_shaded;
+    total.fragments_discarded += s.fragments_discarded;
+    total.fragments_depth_failed += s.fragments_depth_failed;
+}
+
+/// Renders `scene` as `options` ask.
+///
+/// # Errors
+/// A zero or oversized image, an invalid sample count, a camera index beyond the scene's, a
+/// scene with nothing to frame, or a texture that cannot be prepared.
+#[allow(clippy::too_many_lines)]
+pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, RenderError> {
+    let started = Instant::now();
+    let (width, height) = (options.width, options.height);
+    if width == 0 || height == 0 || width > 16_384 || height > 16_384 {
+        return Err(RenderError::InvalidOption(format!(
+            "image size {width}×{height} (each side 1 to 16384)"
+        )));
+    }
+    let camera = choose_camera(scene, options)?;
+    let view_projection = camera.projection * camera.view;
+    let size = Vec2::new(width as f32, height as f32);
+    let lit = options.shading == Shading::Phong;
+
+    // Geometry in world space, with what texture preparation needs to know about it.
+    let mut items: Vec<DrawItem<'_>> = Vec::new();
+    for instance in &scene.instances {
+        let normal_matrix = Mat3::from_mat4(instance.world).inverse().transpose();
+        for primitive in &instance.mesh.primitives {
+            let positions: Vec<Vec3> = primitive
+                .positions
+                .iter()
+                .map(|&p| instance.world.transform_point3(p))
+                .collect();
+            let normals = primitive.normals.as_ref().map(|n| {
+                n.iter()
+                    .map(|&v| (normal_matrix * v).normalize_or_zero())
+                    .collect()
+            });
+            let clip: Vec<Vec4> = positions
+                .iter()
+                .map(|p| view_projection * p.extend(1.0))
+                .collect();
+            let uv0 = primitive.tex_coords0.as_deref();
+            let uv1 = primitive.tex_coords1.as_deref();
+            let material = scene.material(primitive.material);
+            let centre = positions.iter().copied().sum::<Vec3>() / positions.len().max(1) as f32;
+            items.push(DrawItem {
+                uv_per_pixel: uv_per_pixel(&clip, [uv0, uv1], &primitive.triangles, size),
+                indices: primitive.triangles.iter().flatten().copied().collect(),
+                vertices: (0..positions.len() as u32).collect(),
+                primitive: WorldPrimitive {
+                    positions,
+                    normals,
+                    uv0,
+                    uv1,
+                    colors: primitive.colors0.as_deref(),
+                },
+                material: ShaderMaterial {
+                    base_color: material.base_color_factor,
+                    base_texture: None,
+                    emissive: material.emissive_factor,
+                    emissive_texture: None,
+                    occlusion_texture: None,
+                    occlusion_strength: material.occlusion_strength,
+                    metallic: material.metallic_factor.clamp(0.0, 1.0),
+                    roughness: material.roughness_factor.clamp(0.0, 1.0),
+                    alpha_mode: material.alpha_mode,
+                    lit: lit && !material.unlit,
+                },
+                double_sided: material.double_sided,
+                flips_winding: instance.flips_winding,
+                blended: material.alpha_mode == AlphaMode::Blend,
+                depth: (camera.view * centre.extend(1.0)).z,
+            });
+        }
+    }
+    // Textures: only those the drawn materials sample; mips only where minified.
+    let mut textures = Textures::default();
+    let item_materials: Vec<Option<usize>> = scene
+        .instances
+        .iter()
+        .flat_map(|i| i.mesh.primitives.iter().map(|p| p.material))
+        .collect();
+    let minification = |r: &TextureRef, (w, h): (u32, u32)| -> f32 {
+        let det = r
+            .transform
+            .x_axis
+            .truncate()
+            .perp_dot(r.transform.y_axis.truncate())
+            .abs();
+        let texels = (w as f32 * h as f32 * det).sqrt();
+        items
+            .iter()
+            .zip(&item_materials)
+            .filter(|(_, m)| {
+                scene
+                    .material(**m)
+                    .texture_refs()
+                    .iter()
+                    .any(|(t, _)| t.image == r.image)
+            })
+            .map(|(item, _)| item.uv_per_pixel[(r.tex_coord as usize).min(1)] * texels)
+            .fold(0.0, f32::max)
+    };
+    let mut slots = Vec::with_capacity(items.len());
+    for material in &item_materials {
+        let m = scene.material(*material);
+        let mut slot = |r: &Option<TextureRef>, space| -> Result<_, TextureError> {
+            match r {
+                Some(r) => textures.slot(
+                    scene,
+                    r,
+                    space,
+                    options.filter.apply(r.sampler.to_descriptor()),
+                    &minification,
+                ),
+                None => Ok(None),
+            }
+        };
+        let base = slot(&m.base_color_texture, ColorSpace::Srgb)?;
+        let (emissive, occlusion) = if lit && !m.unlit {
+            (
+                slot(&m.emissive_texture, ColorSpace::Srgb)?,
+                slot(&m.occlusion_texture, ColorSpace::Linear)?,
+            )
+        } else {
+            (None, None)
+        };
+        slots.push((base, emissive, occlusion));
+    }
+    for (item, (base, emissive, occlusion)) in items.iter_mut().zip(slots) {
+        item.material.base_texture = base;
+        item.material.emissive_texture = emissive;
+        item.material.occlusion_texture = occlusion;
+    }
+    // Opaque and masked first, in scene order; blended after, back to front.
+    let (mut order, mut blended): (Vec<usize>, Vec<usize>) =
+        (0..items.len()).partition(|&i| !items[i].blended);
+    blended.sort_by(|&a, &b| items[a].depth.total_cmp(&items[b].depth));
+    order.extend(blended);
+    // Lights in world space; a headlight when the scene has none.
+    let forward = camera
+        .view
+        .inverse()
+        .transform_vector3(Vec3::NEG_Z)
+        .normalize_or_zero();
+    let mut lights: Vec<WorldLight> = scene
+        .lights
+        .iter()
+        .map(|l| WorldLight {
+            kind: l.light.kind,
+            radiance: l.light.color * l.light.intensity,
+            position: l.position,
+            direction: l.direction.normalize_or_zero(),
+            range: l.light.range,
+        })
+        .collect();
+    if lights.is_empty() {
+        lights.push(WorldLight {
+            kind: LightKind::Directional,
+            radiance: Vec3::splat(std::f32::consts::PI),
+            position: camera.eye,
+            direction: forward,
+            range: None,
+        });
+    }
+    let prepare_seconds = started.elapsed().as_secs_f64();
+
+    // The passes.
+    let sample_shading = matches!(
+        options.anti_aliasing,
+        AntiAliasing::Supersample(_) | AntiAliasing::Jitter(_)
+    );
+    let mut total = DrawStats::default();
+    let mut passes = 0_u32;
+    let mut draw_scene = |fb: &mut Framebuffer, shift: Vec2| {
+        passes += 1;
+        for &i in &order {
+            let item = &items[i];
+            let shader = MaterialShader {
+                view_projection,
+                eye: camera.eye,
+                primitive: &item.primitive,
+                material: item.material,
+                textures: &textures.list,
+                lights: &lights,
+                ambient: Vec3::splat(0.03),
+            };
+            let state = PipelineState {
+                cull: if item.double_sided {
+                    CullMode::None
+                } else {
+                    CullMode::Back
+                },
+                front_face: if item.flips_winding {
+                    FrontFace::Cw
+                } else {
+                    FrontFace::Ccw
+                },
+                viewport: Some(Viewport {
+                    x: shift.x,
+                    y: shift.y,
+                    ..Viewport::full(width, height)
+                }),
+                blend: if item.blended {
+                    Blend::Over
+                } else {
+                    Blend::Replace
+                },
+                depth_write: !item.blended,
+                sample_shading,
+                ..PipelineState::default()
+            };
+            let s = draw(fb, &shader, &state, &item.vertices, &item.indices);
+            add_stats(&mut total, &s);
+        }
+    };
+    let limits = Limits::default();
+    let background = options.background;
+    let drawing = Instant::now();
+    let multisampled = |pattern: SamplePattern,
+                        draw_scene: &mut dyn FnMut(&mut Framebuffer, Vec2)| {
+        let mut fb = Framebuffer::multisampled(width, height, pattern, background, &limits)?;
+        draw_scene(&mut fb, Vec2::ZERO);
+        Ok::<_, TextureError>((fb, f64::from(pattern.count())))
+    };
+    let mut adaptive = None;
+    let (image, samples_per_pixel) = match options.anti_aliasing {
+        AntiAliasing::None => multisampled(SamplePattern::CENTRE, &mut draw_scene)?,
+        AntiAliasing::Msaa(n) => {
+            multisampled(SamplePattern::Standard { count: n }, &mut draw_scene)?
+        }
+        AntiAliasing::Supersample(n) | AntiAliasing::Jitter(n) if n == 0 || n > 16 => {
+            return Err(RenderError::InvalidOption(format!(
+                "{n}×{n} samples per pixel (n from 1 to 16)"
+            )));
+        }
+        AntiAliasing::Supersample(n) if n <= 5 => {
+            multisampled(SamplePattern::Regular { n }, &mut draw_scene)?
+        }
+        AntiAliasing::Jitter(n) if n <= 5 => {
+            multisampled(SamplePattern::Jittered { n, seed: 1 }, &mut draw_scene)?
+        }
+        AntiAliasing::Supersample(n) => (
+            render_supersampled(
+                width,
+                height,
+                background,
+                SamplePattern::Regular { n },
+                &limits,
+                &mut draw_scene,
+            )?,
+            f64::from(n * n),
+        ),
+        AntiAliasing::Jitter(n) => (
+            render_supersampled(
+                width,
+                height,
+                background,
+                SamplePattern::Jittered { n, seed: 1 },
+                &limits,
+                &mut draw_scene,
+            )?,
+            f64::from(n * n),
+        ),
+        AntiAliasing::Adaptive(max) => {
+            let adaptive_options = AdaptiveOptions {
+                max_samples: max.max(4),
+                ..AdaptiveOptions::default()
+            };
+            let (fb, stats) = render_adaptive(
+                width,
+                height,
+                background,
+                &adaptive_options,
+                &limits,
+                &mut draw_scene,
+            )?;
+            let spp = stats.mean_samples();
+            adaptive = Some(stats);
+            (fb, spp)
+        }
+    };
+    let draw_seconds = drawing.elapsed().as_secs_f64();
+    Ok(Rendered {
+        image,
+        camera,
+        stats: RenderStats {
+            primitives: items.len(),
+            triangles: items.iter().map(|i| i.indices.len() / 3).sum(),
+            draw: total,
+            passes,
+            samples_per_pixel,
+            adaptive,
+            textures: textures.list.len(),
+            mip_chains: textures.mip_chains,
+            mips_skipped: textures.mips_skipped,
+            prepare_seconds,
+            draw_seconds,
+        },
+    })
+}

@@ -1,0 +1,216 @@
+//! The shader a scene's primitives are drawn with: glTF's base colour (factor × texture ×
+//! vertex colour), alpha modes, emission, occlusion, and per-pixel Blinn–Phong under the
+//! scene's punctual lights — or glTF's unlit model.
+
+use barytex_raster::{Fragment, Shader};
+use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
+
+use crate::light::LightKind;
+use crate::material::AlphaMode;
+use crate::render::surface::Surface;
+use crate::render::textures::{PreparedTexture, Slot};
+
+/// A light in world space, ready to evaluate.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct WorldLight {
+    pub(crate) kind: LightKind,
+    /// Colour × intensity.
+    pub(crate) radiance: Vec3,
+    pub(crate) position: Vec3,
+    /// Where the light points (unit).
+    pub(crate) direction: Vec3,
+    pub(crate) range: Option<f32>,
+}
+
+/// A primitive's vertex data in world space.
+pub(crate) struct WorldPrimitive<'a> {
+    pub(crate) positions: Vec<Vec3>,
+    pub(crate) normals: Option<Vec<Vec3>>,
+    pub(crate) uv0: Option<&'a [Vec2]>,
+    pub(crate) uv1: Option<&'a [Vec2]>,
+    pub(crate) colors: Option<&'a [Vec4]>,
+}
+
+/// The material as the shader reads it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ShaderMaterial {
+    pub(crate) base_color: Vec4,
+    pub(crate) base_texture: Option<Slot>,
+    pub(crate) emissive: Vec3,
+    pub(crate) emissive_texture: Option<Slot>,
+    pub(crate) occlusion_texture: Option<Slot>,
+    pub(crate) occlusion_strength: f32,
+    pub(crate) metallic: f32,
+    pub(crate) roughness: f32,
+    pub(crate) alpha_mode: AlphaMode,
+    pub(crate) lit: bool,
+}
+
+/// Draws one primitive.
+pub(crate) struct MaterialShader<'a> {
+    pub(crate) view_projection: Mat4,
+    pub(crate) eye: Vec3,
+    pub(crate) primitive: &'a WorldPrimitive<'a>,
+    pub(crate) material: ShaderMaterial,
+    pub(crate) textures: &'a [PreparedTexture],
+    pub(crate) lights: &'a [WorldLight],
+    pub(crate) ambient: Vec3,
+}
+
+/// glTF's recommended range falloff for punctual lights, times the inverse square law.
+fn distance_attenuation(distance: f32, range: Option<f32>) -> f32 {
+    let d2 = (distance * distance).max(1e-8);
+    let window = range.map_or(1.0, |r| {
+        let x = distance / r;
+        (1.0 - x * x * x * x).clamp(0.0, 1.0)
+    });
+    window / d2
+}
+
+/// KHR_lights_punctual's smooth spot cone.
+fn cone_attenuation(cos_angle: f32, inner: f32, outer: f32) -> f32 {
+    let (cos_outer, cos_inner) = (outer.cos(), inner.cos());
+    let scale = 1.0 / (cos_inner - cos_outer).max(1e-3);
+    let t = ((cos_angle - cos_outer) * scale).clamp(0.0, 1.0);
+    t * t
+}
+
+impl MaterialShader<'_> {
+    fn sample(
+        &self,
+        slot: Option<Slot>,
+        s: &Surface,
+        ddx: &Surface,
+        ddy: &Surface,
+    ) -> Option<Vec4> {
+        let slot = slot?;
+        let texture = self.textures.get(slot.texture)?;
+        let (uv, dx, dy) = if slot.tex_coord == 1 {
+            (s.uv1, ddx.uv1, ddy.uv1)
+        } else {
+            (s.uv0, ddx.uv0, ddy.uv0)
+        };
+        let t: Mat3 = slot.transform;
+        let uv = (t * uv.extend(1.0)).truncate();
+        let (dx, dy) = (
+            (t * dx.extend(0.0)).truncate(),
+            (t * dy.extend(0.0)).truncate(),
+        );
+        Some(texture.sample(uv, dx, dy))
+    }
+}
+
+impl Shader for MaterialShader<'_> {
+    type Vertex = u32;
+    type Varying = Surface;
+
+    fn vertex(&self, &i: &u32) -> (Vec4, Surface) {
+        let i = i as usize;
+        let p = self.primitive;
+        let position = p.positions.get(i).copied().unwrap_or(Vec3::NAN);
+        let surface = Surface {
+            position,
+            normal: p
+                .normals
+                .as_ref()
+                .and_then(|n| n.get(i))
+                .copied()
+                .unwrap_or_default(),
+            uv0: p.uv0.and_then(|n| n.get(i)).copied().unwrap_or_default(),
+            uv1: p.uv1.and_then(|n| n.get(i)).copied().unwrap_or_default(),
+            color: p
+                .colors
+                .and_then(|n| n.get(i))
+                .copied()
+                .unwrap_or(Vec4::ONE),
+        };
+        (self.view_projection * position.extend(1.0), surface)
+    }
+
+    fn fragment(&self, f: &Fragment<'_, Surface>) -> Option<Vec4> {
+        let s = f.varying;
+        let m = &self.material;
+        let needs_derivatives = m.base_texture.is_some()
+            || m.emissive_texture.is_some()
+            || m.occlusion_texture.is_some()
+            || (m.lit && self.primitive.normals.is_none());
+        let (ddx, ddy) = if needs_derivatives {
+            (f.ddx(), f.ddy())
+        } else {
+            (Surface::default(), Surface::default())
+        };
+        let mut base = m.base_color * s.color;
+        if let Some(t) = self.sample(m.base_texture, &s, &ddx, &ddy) {
+            base *= t;
+        }
+        let alpha = match m.alpha_mode {
+            AlphaMode::Opaque => 1.0,
+            AlphaMode::Mask { cutoff } => {
+                if base.w < cutoff {
+                    return None;
+                }
+                1.0
+            }
+            AlphaMode::Blend => base.w,
+        };
+        if !m.lit {
+            return Some(base.truncate().extend(alpha));
+        }
+        let view = (self.eye - s.position).normalize_or_zero();
+        // The interpolated normal, or the face normal from the position's derivatives.
+        let mut n = if self.primitive.normals.is_some() {
+            s.normal.normalize_or_zero()
+        } else {
+            ddx.position.cross(ddy.position).normalize_or_zero()
+        };
+        if n.dot(view) < 0.0 && (!f.front_facing || self.primitive.normals.is_none()) {
+            n = -n;
+        }
+        let albedo = base.truncate() * (1.0 - m.metallic);
+        let specular_color = Vec3::splat(0.04).lerp(base.truncate(), m.metallic);
+        let alpha_r = (m.roughness * m.roughness).clamp(0.02, 1.0);
+        let shininess = (2.0 / (alpha_r * alpha_r) - 2.0).max(1.0);
+        let mut color = Vec3::ZERO;
+        for light in self.lights {
+            let (l, attenuation) = match light.kind {
+                LightKind::Directional => (-light.direction, 1.0),
+                LightKind::Point | LightKind::Spot { .. } => {
+                    let to_light = light.position - s.position;
+                    let d = to_light.length();
+                    let l = to_light / d.max(1e-12);
+                    let mut a = distance_attenuation(d, light.range);
+                    if let LightKind::Spot {
+                        inner_cone_angle,
+                        outer_cone_angle,
+                    } = light.kind
+                    {
+                        a *= cone_attenuation(
+                            light.direction.dot(-l),
+                            inner_cone_angle,
+                            outer_cone_angle,
+                        );
+                    }
+                    (l, a)
+                }
+            };
+            let n_dot_l = n.dot(l);
+            if n_dot_l <= 0.0 || attenuation <= 0.0 {
+                continue;
+            }
+            let h = (l + view).normalize_or_zero();
+            let spec = (shininess + 8.0) / (8.0 * std::f32::consts::PI)
+                * n.dot(h).max(0.0).powf(shininess);
+            let brdf = albedo / std::f32::consts::PI + specular_color * spec;
+            color += brdf * light.radiance * (n_dot_l * attenuation);
+        }
+        let mut ambient = self.ambient * base.truncate();
+        if let Some(o) = self.sample(m.occlusion_texture, &s, &ddx, &ddy) {
+            ambient *= 1.0 + m.occlusion_strength * (o.x - 1.0);
+        }
+        let mut emissive = m.emissive;
+        if let Some(e) = self.sample(m.emissive_texture, &s, &ddx, &ddy) {
+            emissive *= e.truncate();
+        }
+        Some((color + ambient + emissive).extend(alpha))
+    }
+}

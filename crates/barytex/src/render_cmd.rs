@@ -1,0 +1,242 @@
+//! `barytex render FILE` and the default demo: load (or build) a scene, render it, write a PNG,
+//! and say where it went and how long each stage took.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use barytex_scene::render::{
+    AntiAliasing, CameraChoice, Filter, RenderOptions, Rendered, Shading, render,
+};
+use barytex_scene::{LoadOptions, Scene, load_path};
+
+/// What to render and how.
+#[derive(Clone, Debug)]
+pub(crate) struct Options {
+    /// The glTF/GLB file; `None` renders the built-in demo scene.
+    pub(crate) file: Option<PathBuf>,
+    /// Which of the file's scenes.
+    pub(crate) scene: Option<usize>,
+    /// The render settings.
+    pub(crate) render: RenderOptions,
+    /// Worker threads (`None`: all cores).
+    pub(crate) threads: Option<usize>,
+    /// Where the PNG goes.
+    pub(crate) out: PathBuf,
+    /// Print the camera's matrices.
+    pub(crate) print_camera: bool,
+    /// Print the render statistics.
+    pub(crate) stats: bool,
+}
+
+/// `WxH`, e.g. `1024x768`.
+pub(crate) fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let (w, h) = text
+        .split_once(['x', 'X', '×'])
+        .ok_or_else(|| format!("size `{text}`: expected WIDTHxHEIGHT, e.g. 800x600"))?;
+    let side = |s: &str| {
+        s.trim()
+            .parse::<u32>()
+            .ok()
+            .filter(|&v| (1..=16_384).contains(&v))
+            .ok_or_else(|| format!("size `{text}`: each side must be 1 to 16384"))
+    };
+    Ok((side(w)?, side(h)?))
+}
+
+/// `auto` or a camera index.
+pub(crate) fn parse_camera(text: &str) -> Result<CameraChoice, String> {
+    if text == "auto" {
+        return Ok(CameraChoice::Auto);
+    }
+    text.parse()
+        .map(CameraChoice::Index)
+        .map_err(|_| format!("camera `{text}`: expected `auto` or a camera index"))
+}
+
+fn number_after(
+    text: &str,
+    prefix: &str,
+    range: std::ops::RangeInclusive<u32>,
+) -> Result<u32, String> {
+    text.strip_prefix(prefix)
+        .and_then(|n| n.parse::<u32>().ok())
+        .filter(|n| range.contains(n))
+        .ok_or_else(|| {
+            format!(
+                "`{text}`: expected {prefix}N with N from {} to {}",
+                range.start(),
+                range.end()
+            )
+        })
+}
+
+/// `file|nearest|bilinear|trilinear|aniso:N|ewa`.
+pub(crate) fn parse_filter(text: &str) -> Result<Filter, String> {
+    Ok(match text {
+        "file" => Filter::FromFile,
+        "nearest" => Filter::Nearest,
+        "bilinear" => Filter::Bilinear,
+        "trilinear" => Filter::Trilinear,
+        "ewa" => Filter::Ewa,
+        _ if text.starts_with("aniso:") => {
+            Filter::Anisotropic(number_after(text, "aniso:", 1..=16)? as u16)
+        }
+        _ => {
+            return Err(format!(
+                "filter `{text}`: expected file, nearest, bilinear, trilinear, aniso:N or ewa"
+            ));
+        }
+    })
+}
+
+/// `none|ssaa:N|jitter:N|msaa:N|adaptive:N`.
+pub(crate) fn parse_aa(text: &str) -> Result<AntiAliasing, String> {
+    Ok(match text {
+        "none" => AntiAliasing::None,
+        _ if text.starts_with("ssaa:") => {
+            AntiAliasing::Supersample(number_after(text, "ssaa:", 1..=16)?)
+        }
+        _ if text.starts_with("jitter:") => {
+            AntiAliasing::Jitter(number_after(text, "jitter:", 1..=16)?)
+        }
+        _ if text.starts_with("msaa:") => {
+            let n = number_after(text, "msaa:", 1..=16)?;
+            if !matches!(n, 1 | 2 | 4 | 8 | 16) {
+                return Err(format!("`{text}`: MSAA takes 1, 2, 4, 8 or 16 samples"));
+            }
+            AntiAliasing::Msaa(n)
+        }
+        _ if text.starts_with("adaptive:") => {
+            AntiAliasing::Adaptive(number_after(text, "adaptive:", 4..=256)?)
+        }
+        _ => {
+            return Err(format!(
+                "anti-aliasing `{text}`: expected none, ssaa:N (N×N), jitter:N (N×N), msaa:N or \
+                 adaptive:N (up to N samples)"
+            ));
+        }
+    })
+}
+
+/// `unlit|phong`.
+pub(crate) fn parse_shading(text: &str) -> Result<Shading, String> {
+    match text {
+        "unlit" => Ok(Shading::Unlit),
+        "phong" => Ok(Shading::Phong),
+        _ => Err(format!("shading `{text}`: expected unlit or phong")),
+    }
+}
+
+fn load(options: &Options) -> Result<(Scene, f64), Box<dyn std::error::Error>> {
+    let started = Instant::now();
+    let scene = match &options.file {
+        None => barytex_scene::demo::demo_scene(),
+        Some(path) => load_path(
+            path,
+            &LoadOptions {
+                scene: options.scene,
+                ..LoadOptions::default()
+            },
+        )
+        .map_err(|e| format!("{}: {e}", path.display()))?,
+    };
+    Ok((scene, started.elapsed().as_secs_f64()))
+}
+
+fn print_stats(rendered: &Rendered, scene: &Scene) {
+    let s = &rendered.stats;
+    let d = &s.draw;
+    println!(
+        "scene: {} instances, {} triangles per pass, {} primitives; loader: {} images decoded, \
+         {} skipped (unused), {} primitives skipped (points/lines)",
+        scene.instances.len(),
+        s.triangles,
+        s.primitives,
+        scene.stats.images_decoded,
+        scene.stats.images_skipped,
+        scene.stats.primitives_skipped_non_triangle
+    );
+    println!(
+        "textures: {} prepared, {} mip chains built, {} not built (never minified)",
+        s.textures, s.mip_chains, s.mips_skipped
+    );
+    println!(
+        "draw: {} passes, {:.2} samples/pixel, {} fragments shaded, {} discarded, {} failed depth; \
+         triangles culled {}, clipped {}, clipped away {}, degenerate {}, non-finite {}",
+        s.passes,
+        s.samples_per_pixel,
+        d.fragments_shaded,
+        d.fragments_discarded,
+        d.fragments_depth_failed,
+        d.culled,
+        d.clipped,
+        d.clipped_away,
+        d.degenerate,
+        d.dropped_non_finite
+    );
+    if let Some(a) = &s.adaptive {
+        println!(
+            "adaptive: {} samples in {} passes; pixels at the maximum: {}",
+            a.samples,
+            a.passes,
+            a.histogram.last().copied().unwrap_or(0)
+        );
+    }
+    for w in &scene.warnings {
+        println!("warning: {w}");
+    }
+}
+
+/// Loads or builds the scene, renders it, writes the PNG.
+pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(options.threads.unwrap_or(0))
+        .build()?;
+    let what = options.file.as_ref().map_or_else(
+        || "the built-in demo scene".to_owned(),
+        |p| p.display().to_string(),
+    );
+    println!(
+        "rendering {what} at {}×{} on {} thread(s)",
+        options.render.width,
+        options.render.height,
+        pool.current_num_threads()
+    );
+    let (scene, load_seconds) = load(options)?;
+    let rendered = pool.install(|| render(&scene, &options.render))?;
+    if options.print_camera {
+        println!("{}", rendered.camera.describe());
+    }
+    let started = Instant::now();
+    let image = rendered.image.to_srgba8()?;
+    save(&image, &options.out)?;
+    let save_seconds = started.elapsed().as_secs_f64();
+    let s = &rendered.stats;
+    println!(
+        "stages: load {:.1} ms, prepare (geometry, textures, mips) {:.1} ms, raster + shade \
+         {:.1} ms, encode + write {:.1} ms",
+        load_seconds * 1e3,
+        s.prepare_seconds * 1e3,
+        s.draw_seconds * 1e3,
+        save_seconds * 1e3
+    );
+    if options.stats {
+        print_stats(&rendered, &scene);
+    }
+    let shown = std::fs::canonicalize(&options.out).unwrap_or_else(|_| options.out.clone());
+    println!("wrote {}", shown.display());
+    Ok(())
+}
+
+fn save(
+    image: &barytex_texture::Texture2d<barytex_texture::Srgba8>,
+    out: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
+    if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    }
+    barytex_texture::load::save_png(image, out)
+        .map_err(|e| format!("cannot write {}: {e}", out.display()))?;
+    Ok(())
+}
