@@ -66,6 +66,14 @@ fn environment_regressions() {
 }
 
 #[test]
+fn gltf_loader_regressions() {
+    replay(
+        "gltf_loader",
+        barytex_testkit::fuzz_inputs::gltf_loader::check_gltf_loader,
+    );
+}
+
+#[test]
 fn raster_soup_regressions() {
     replay(
         "raster_soup",

@@ -11,6 +11,7 @@
 //! [`inverse_bilinear_code`]) that a regression test can paste.
 
 pub mod environment;
+pub mod gltf_loader;
 pub mod hull2d;
 pub mod hull3d;
 pub mod mip_generation;
