@@ -266,6 +266,7 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
                     emissive_texture: None,
                     occlusion_texture: None,
                     occlusion_strength: material.occlusion_strength,
+                    metallic_roughness_texture: None,
                     metallic: material.metallic_factor.clamp(0.0, 1.0),
                     roughness: material.roughness_factor.clamp(0.0, 1.0),
                     alpha_mode: material.alpha_mode,
@@ -322,20 +323,22 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
             }
         };
         let base = slot(&m.base_color_texture, ColorSpace::Srgb)?;
-        let (emissive, occlusion) = if lit && !m.unlit {
+        let (emissive, occlusion, metallic_roughness) = if lit && !m.unlit {
             (
                 slot(&m.emissive_texture, ColorSpace::Srgb)?,
                 slot(&m.occlusion_texture, ColorSpace::Linear)?,
+                slot(&m.metallic_roughness_texture, ColorSpace::Linear)?,
             )
         } else {
-            (None, None)
+            (None, None, None)
         };
-        slots.push((base, emissive, occlusion));
+        slots.push((base, emissive, occlusion, metallic_roughness));
     }
-    for (item, (base, emissive, occlusion)) in items.iter_mut().zip(slots) {
+    for (item, (base, emissive, occlusion, metallic_roughness)) in items.iter_mut().zip(slots) {
         item.material.base_texture = base;
         item.material.emissive_texture = emissive;
         item.material.occlusion_texture = occlusion;
+        item.material.metallic_roughness_texture = metallic_roughness;
     }
     // Opaque and masked first, in scene order; blended after, back to front.
     let (mut order, mut blended): (Vec<usize>, Vec<usize>) =

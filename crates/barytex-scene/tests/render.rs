@@ -281,3 +281,116 @@ fn the_demo_matches_its_golden_image() {
     let mean = sum as f64 / (image.texels().len() * 4) as f64;
     assert!(max <= 2 && mean <= 0.05, "max {max}, mean {mean}");
 }
+
+/// Pixel (x, y) of an sRGB render `width` wide.
+fn at(pixels: &[[u8; 4]], width: u32, x: u32, y: u32) -> [u8; 4] {
+    pixels[(y * width + x) as usize]
+}
+
+fn close(a: [u8; 4], b: [u8; 4], steps: u8) -> bool {
+    a.iter().zip(&b).all(|(p, q)| p.abs_diff(*q) <= steps)
+}
+
+/// TextureLinearInterpolationTest: the emissive factor 0.5 and the texture interpolated halfway
+/// between black and white (in linear light, after sRGB decoding) give the same green, 188.
+#[test]
+fn texture_linear_interpolation_test_spheres_match() {
+    let Some(scene) =
+        load("TextureLinearInterpolationTest/glTF-Binary/TextureLinearInterpolationTest.glb")
+    else {
+        return;
+    };
+    let pixels = srgb(&small(400, 300), &scene);
+    let mut sides = [(0_u64, 0_u64); 2];
+    for (i, p) in pixels.iter().enumerate() {
+        if p[1] > 100 && p[0] < 60 && p[2] < 60 {
+            let side = usize::from((i % 400) >= 200);
+            sides[side].0 += u64::from(p[1]);
+            sides[side].1 += 1;
+        }
+    }
+    let mean = sides.map(|(sum, n)| sum as f64 / n.max(1) as f64);
+    assert!(sides.iter().all(|&(_, n)| n > 1000), "{sides:?}");
+    assert!((mean[0] - mean[1]).abs() < 1.0, "{mean:?}");
+    assert!((mean[0] - 188.0).abs() < 2.0, "{mean:?}");
+}
+
+/// TextureCoordinateTest: uv (0, 0) is the image's top-left: the yellow "Top Left" square is in
+/// the top-left quadrant, the green "Bottom Right" one in the bottom-right.
+#[test]
+fn texture_coordinate_test_has_the_origin_at_the_top_left() {
+    let Some(scene) = load("TextureCoordinateTest/glTF-Binary/TextureCoordinateTest.glb") else {
+        return;
+    };
+    let (w, h) = (400, 300);
+    let pixels = srgb(
+        &RenderOptions {
+            shading: Shading::Unlit,
+            ..small(w, h)
+        },
+        &scene,
+    );
+    let count = |x0: u32, y0: u32, f: &dyn Fn([u8; 4]) -> bool| {
+        (y0..y0 + h / 2)
+            .flat_map(|y| (x0..x0 + w / 2).map(move |x| (x, y)))
+            .filter(|&(x, y)| f(at(&pixels, w, x, y)))
+            .count()
+    };
+    let yellow = |p: [u8; 4]| p[0] > 200 && p[1] > 200 && p[2] < 80;
+    let green = |p: [u8; 4]| p[1] > 200 && p[0] < 80 && p[2] < 80;
+    assert!(count(0, 0, &yellow) > 2000 && count(w / 2, h / 2, &yellow) == 0);
+    assert!(count(w / 2, h / 2, &green) > 2000 && count(0, 0, &green) == 0);
+}
+
+/// VertexColorTest: vertex colours multiply the base colour, so no cyan, magenta or yellow "X"
+/// shows through the red, green and blue checkmarks.
+#[test]
+fn vertex_color_test_shows_no_crosses() {
+    let Some(scene) = load("VertexColorTest/glTF-Binary/VertexColorTest.glb") else {
+        return;
+    };
+    let pixels = srgb(
+        &RenderOptions {
+            shading: Shading::Unlit,
+            ..small(400, 300)
+        },
+        &scene,
+    );
+    let count = |f: &dyn Fn(&[u8; 4]) -> bool| pixels.iter().filter(|p| f(p)).count();
+    let cyan = count(&|p| p[0] < 80 && p[1] > 150 && p[2] > 150);
+    let magenta = count(&|p| p[0] > 150 && p[1] < 80 && p[2] > 150);
+    let yellow = count(&|p| p[0] > 150 && p[1] > 150 && p[2] < 80);
+    assert_eq!((cyan, magenta, yellow), (0, 0, 0));
+    let red = count(&|p| p[0] > 200 && p[1] < 60 && p[2] < 60);
+    let green = count(&|p| p[1] > 200 && p[0] < 60 && p[2] < 60);
+    assert!(red > 200 && green > 200, "{red} {green}");
+}
+
+/// TextureEncodingTest: in each row (base colour, emissive, metallic-roughness) the four spheres
+/// — factors, a 1×1 texture, the same with a gamma chunk, the same with an ICC profile — look the
+/// same: textures decoded in the right colour space, metadata ignored.
+#[test]
+fn texture_encoding_test_columns_match() {
+    let Some(scene) = load("TextureEncodingTest/glTF/TextureEncodingTest.gltf") else {
+        return;
+    };
+    let (w, h) = (400, 300);
+    let pixels = srgb(&small(w, h), &scene);
+    // Sphere centres in the automatic camera's 400 × 300 view.
+    let columns = [162, 203, 245, 288];
+    for (row, y) in [
+        ("base colour", 122),
+        ("emissive", 163),
+        ("metallic-roughness", 206),
+    ] {
+        let first = at(&pixels, w, columns[0], y);
+        assert!(first != pixels[0], "{row}: no sphere at the expected place");
+        for &x in &columns[1..] {
+            let p = at(&pixels, w, x, y);
+            assert!(
+                close(first, p, 3),
+                "{row}: column at x = {x}: {p:?} vs {first:?}"
+            );
+        }
+    }
+}

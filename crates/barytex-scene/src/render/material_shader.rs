@@ -40,6 +40,8 @@ pub(crate) struct ShaderMaterial {
     pub(crate) emissive_texture: Option<Slot>,
     pub(crate) occlusion_texture: Option<Slot>,
     pub(crate) occlusion_strength: f32,
+    /// glTF's metallic-roughness texture: roughness in G, metallic in B (times the factors).
+    pub(crate) metallic_roughness_texture: Option<Slot>,
     pub(crate) metallic: f32,
     pub(crate) roughness: f32,
     pub(crate) alpha_mode: AlphaMode,
@@ -133,6 +135,7 @@ impl Shader for MaterialShader<'_> {
         let needs_derivatives = m.base_texture.is_some()
             || m.emissive_texture.is_some()
             || m.occlusion_texture.is_some()
+            || m.metallic_roughness_texture.is_some()
             || (m.lit && self.primitive.normals.is_none());
         let (ddx, ddy) = if needs_derivatives {
             (f.ddx(), f.ddy())
@@ -166,9 +169,14 @@ impl Shader for MaterialShader<'_> {
         if n.dot(view) < 0.0 && (!f.front_facing || self.primitive.normals.is_none()) {
             n = -n;
         }
-        let albedo = base.truncate() * (1.0 - m.metallic);
-        let specular_color = Vec3::splat(0.04).lerp(base.truncate(), m.metallic);
-        let alpha_r = (m.roughness * m.roughness).clamp(0.02, 1.0);
+        let (mut metallic, mut roughness) = (m.metallic, m.roughness);
+        if let Some(t) = self.sample(m.metallic_roughness_texture, &s, &ddx, &ddy) {
+            roughness *= t.y;
+            metallic *= t.z;
+        }
+        let albedo = base.truncate() * (1.0 - metallic);
+        let specular_color = Vec3::splat(0.04).lerp(base.truncate(), metallic);
+        let alpha_r = (roughness * roughness).clamp(0.02, 1.0);
         let shininess = (2.0 / (alpha_r * alpha_r) - 2.0).max(1.0);
         let mut color = Vec3::ZERO;
         for light in self.lights {
