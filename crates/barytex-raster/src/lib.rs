@@ -33,7 +33,7 @@ mod tile;
 pub use adaptive::{AdaptiveOptions, AdaptiveStats, render_adaptive};
 pub use draw::{DrawStats, draw};
 pub use edge::{MAX_COORDINATE, SUBPIXEL_BITS};
-pub use samples::{MAX_SAMPLES, SamplePattern};
+pub use samples::{MAX_GRID, MAX_SAMPLES, SamplePattern};
 pub use shader::{Fragment, Shader};
 pub use state::{Blend, CullMode, FrontFace, Interpolation, PipelineState, Scissor, Viewport};
 pub use supersample::render_supersampled;

@@ -8,8 +8,12 @@ use glam::Vec2;
 
 use crate::edge::SUBPIXEL_BITS;
 
-/// The most samples a pixel may have (coverage is a 32-bit mask).
+/// The most samples a pixel of a multisampled target may have (coverage is a 32-bit mask).
 pub const MAX_SAMPLES: u32 = 32;
+
+/// The largest grid side of [`SamplePattern::offsets`] (and so of
+/// [`render_supersampled`](crate::render_supersampled)): 64 × 64 = 4096 passes.
+pub const MAX_GRID: u32 = 64;
 
 const ONE: i64 = 1 << SUBPIXEL_BITS;
 
@@ -77,7 +81,7 @@ impl SamplePattern {
     /// One sample at the pixel centre: no anti-aliasing.
     pub const CENTRE: Self = Self::Regular { n: 1 };
 
-    /// Samples per pixel.
+    /// Samples per pixel (saturating: a pattern beyond `u32::MAX` samples reports `u32::MAX`).
     #[must_use]
     pub fn count(self) -> u32 {
         match self {
@@ -159,10 +163,19 @@ impl SamplePattern {
 
     /// The sample offsets of pixel (0, 0) from its top-left corner, each in `[0, 1)²` (for a
     /// jittered pattern, the positions one pass of
-    /// [`render_supersampled`](crate::render_supersampled) uses for every pixel).
+    /// [`render_supersampled`](crate::render_supersampled) uses for every pixel). Grids are
+    /// limited to [`MAX_GRID`] × [`MAX_GRID`]: a larger `n` gives that many.
     #[must_use]
     pub fn offsets(self) -> Vec<Vec2> {
-        match self {
+        let this = match self {
+            Self::Regular { n } => Self::Regular { n: n.min(MAX_GRID) },
+            Self::Jittered { n, seed } => Self::Jittered {
+                n: n.min(MAX_GRID),
+                seed,
+            },
+            standard => standard,
+        };
+        match this {
             Self::Jittered { n, seed } => {
                 // Per-pass jitter keeps the unquantized positions.
                 let n = n.max(1);
@@ -176,9 +189,9 @@ impl SamplePattern {
                     })
                     .collect()
             }
-            _ => (0..self.count())
+            _ => (0..this.count())
                 .map(|k| {
-                    let (x, y) = self.fixed_offset(0, 0, k);
+                    let (x, y) = this.fixed_offset(0, 0, k);
                     Vec2::new(x as f32, y as f32) / ONE as f32
                 })
                 .collect(),
@@ -227,6 +240,23 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn huge_grids_are_capped_not_overflowed() {
+        assert_eq!(
+            SamplePattern::Jittered { n: 70_000, seed: 1 }.count(),
+            u32::MAX
+        );
+        let offsets = SamplePattern::Jittered { n: 70_000, seed: 1 }.offsets();
+        assert_eq!(offsets.len(), (MAX_GRID * MAX_GRID) as usize);
+        assert_eq!(
+            SamplePattern::Regular { n: u32::MAX }.offsets().len(),
+            (MAX_GRID * MAX_GRID) as usize
+        );
+        assert!(SamplePattern::Regular { n: 6 }.validate().is_err());
+        assert!(SamplePattern::Standard { count: 3 }.validate().is_err());
+        assert!(SamplePattern::Standard { count: 16 }.validate().is_ok());
     }
 
     #[test]

@@ -28,7 +28,8 @@ fn hash(x: i64, y: i64, seed: u32) -> f32 {
 }
 
 impl ValueNoise {
-    /// The noise value at `uv` as an opaque grey; non-finite input gives transparent black.
+    /// The noise value at `uv` as an opaque grey; non-finite input gives transparent black, and
+    /// huge finite input (beyond 2⁶³ lattice cells) a grey value, never a panic.
     #[must_use]
     pub fn at(&self, uv: Vec2) -> Vec4 {
         let p = uv * self.frequency;
@@ -39,9 +40,12 @@ impl ValueNoise {
         let (x, y) = (fx as i64, fy as i64);
         let smooth = |t: f32| t * t * (3.0 - 2.0 * t);
         let (tx, ty) = (smooth(p.x - fx), smooth(p.y - fy));
-        let top = hash(x, y, self.seed) + (hash(x + 1, y, self.seed) - hash(x, y, self.seed)) * tx;
-        let bottom = hash(x, y + 1, self.seed)
-            + (hash(x + 1, y + 1, self.seed) - hash(x, y + 1, self.seed)) * tx;
+        // Beyond 2⁶³ the cast saturates: the neighbour wraps around the lattice (the pattern is
+        // arbitrary there anyway) instead of overflowing.
+        let (x1, y1) = (x.wrapping_add(1), y.wrapping_add(1));
+        let top = hash(x, y, self.seed) + (hash(x1, y, self.seed) - hash(x, y, self.seed)) * tx;
+        let bottom =
+            hash(x, y1, self.seed) + (hash(x1, y1, self.seed) - hash(x, y1, self.seed)) * tx;
         let g = (top + (bottom - top) * ty).clamp(0.0, 1.0);
         Vec4::new(g, g, g, 1.0)
     }
@@ -54,5 +58,24 @@ impl Sampler for ValueNoise {
 
     fn sample_level(&self, uv: Vec2, _lod: f32) -> Vec4 {
         self.at(uv)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn huge_and_non_finite_coordinates_never_panic() {
+        // uv·frequency finite but far beyond 2⁶³ lattice cells.
+        let noise = ValueNoise {
+            frequency: 2.0,
+            seed: 7,
+        };
+        for uv in [Vec2::splat(1e30), Vec2::splat(-1e30), Vec2::new(1e30, 3.0)] {
+            let c = noise.at(uv);
+            assert!(c.is_finite() && c.w == 1.0, "{uv}: {c}");
+        }
+        assert_eq!(noise.at(Vec2::NAN), Vec4::ZERO);
     }
 }
