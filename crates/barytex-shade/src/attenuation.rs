@@ -58,7 +58,7 @@ impl Attenuation {
         let pos = |x: f32| if x > 0.0 { x } else { 0.0 };
         let d = pos(distance);
         // A zero coefficient contributes nothing even at infinite distance (no 0·∞ = NaN).
-        let term = |c: f32, x: f32| if c > 0.0 { c * x } else { 0.0 };
+        let term = |c: f32, x: f32| if c > 0.0 && x > 0.0 { c * x } else { 0.0 };
         let denominator = pos(self.constant) + term(self.linear, d) + term(self.quadratic, d * d);
         if denominator <= 1.0 {
             return 1.0;
