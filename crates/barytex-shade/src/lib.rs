@@ -5,6 +5,9 @@
 //! |---|---|
 //! | lights | [`Light`] (directional, point, spot), [`SpotShape`] (Warn's `(cos α)^p`, glTF cones), [`Attenuation`] (`min(1/(c1 + c2 d + c3 d²), 1)`) |
 //! | illumination models | [`lambert`], [`phong_specular`], [`blinn_phong_specular`], [`Material`], [`Lighting`], [`Specular`] |
+//! | camera and scene | [`Camera`] ([`camera::look_at`], [`camera::perspective`]), [`Scene`], [`ViewVector`], [`ShadeVertex`], [`mesh_vertices`] |
+//! | normals | [`face_normal`], [`vertex_normals`] ([`NormalWeighting`]: uniform, area, angle) |
+//! | shading frequencies | flat ([`flat_vertices`] + [`ColouredShader`]), [`GouraudShader`], [`PhongShader`], Gouraud + Phong with the H-test ([`HighlightTest`], [`hybrid_vertices`], [`HybridShader`]), the exact-normal [`ReferenceShader`] |
 //! | atmosphere | [`DepthCue`], [`ExponentialFog`] ([`FogDistance`]), [`HeightFog`], [`atmosphere::blend`] |
 //!
 //! Conventions: linear-light colours; `N` (normal), `L` (towards the light) and `V` (towards the
@@ -26,10 +29,24 @@
 
 pub mod atmosphere;
 mod attenuation;
+pub mod camera;
+mod frequency;
+mod highlight;
 mod light;
 mod model;
+mod normals;
+mod scene;
 
 pub use atmosphere::{DepthCue, ExponentialFog, FogDistance, HeightFog};
 pub use attenuation::Attenuation;
+pub use camera::Camera;
+pub use frequency::{
+    ColouredShader, ColouredVertex, GouraudShader, PhongShader, ReferenceShader, flat_vertices,
+};
+pub use highlight::{
+    HighlightTest, HighlightVerdict, HybridShader, HybridStats, HybridVertex, hybrid_vertices,
+};
 pub use light::{Light, LightSample, SpotShape};
 pub use model::{Lighting, Material, Specular, blinn_phong_specular, lambert, phong_specular};
+pub use normals::{NormalWeighting, face_normal, vertex_normals};
+pub use scene::{Scene, ShadeVertex, ViewVector, mesh_vertices};
