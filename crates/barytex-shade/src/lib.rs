@@ -8,6 +8,9 @@
 //! | camera and scene | [`Camera`] ([`camera::look_at`], [`camera::perspective`]), [`Scene`], [`ViewVector`], [`ShadeVertex`], [`mesh_vertices`] |
 //! | normals | [`face_normal`], [`vertex_normals`] ([`NormalWeighting`]: uniform, area, angle) |
 //! | shading frequencies | flat ([`flat_vertices`] + [`ColouredShader`]), [`GouraudShader`], [`PhongShader`], Gouraud + Phong with the H-test ([`HighlightTest`], [`hybrid_vertices`], [`HybridShader`]), the exact-normal [`ReferenceShader`] |
+//! | texturing | [`SurfaceShader`] with [`TextureUse`] (replace, modulate, diffuse/specular/shininess input) |
+//! | normal perturbation | [`decode_normal`], [`perturb_normal`] (normal maps), [`generate_tangents`] (MikkTSpace), [`bump_normal`] and [`HeightField`] (bump maps) |
+//! | environment maps | [`Environment`] (cube, sphere map, equirect), [`DirectionSampler`], [`reflection_direction`] |
 //! | atmosphere | [`DepthCue`], [`ExponentialFog`] ([`FogDistance`]), [`HeightFog`], [`atmosphere::blend`] |
 //!
 //! Conventions: linear-light colours; `N` (normal), `L` (towards the light) and `V` (towards the
@@ -30,16 +33,20 @@
 pub mod atmosphere;
 mod attenuation;
 pub mod camera;
+mod environment;
 mod frequency;
 mod highlight;
 mod light;
 mod model;
 mod normals;
+mod perturb;
 mod scene;
+mod texturing;
 
 pub use atmosphere::{DepthCue, ExponentialFog, FogDistance, HeightFog};
 pub use attenuation::Attenuation;
 pub use camera::Camera;
+pub use environment::{DirectionSampler, Environment, reflection_direction};
 pub use frequency::{
     ColouredShader, ColouredVertex, GouraudShader, PhongShader, ReferenceShader, flat_vertices,
 };
@@ -49,4 +56,6 @@ pub use highlight::{
 pub use light::{Light, LightSample, SpotShape};
 pub use model::{Lighting, Material, Specular, blinn_phong_specular, lambert, phong_specular};
 pub use normals::{NormalWeighting, face_normal, vertex_normals};
+pub use perturb::{HeightField, bump_normal, decode_normal, generate_tangents, perturb_normal};
 pub use scene::{Scene, ShadeVertex, ViewVector, mesh_vertices};
+pub use texturing::{SurfaceShader, SurfaceVarying, TextureUse};
