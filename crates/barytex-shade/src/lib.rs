@@ -8,6 +8,7 @@
 //! | camera and scene | [`Camera`] ([`camera::look_at`], [`camera::perspective`]), [`Scene`], [`ViewVector`], [`ShadeVertex`], [`mesh_vertices`] |
 //! | normals | [`face_normal`], [`vertex_normals`] ([`NormalWeighting`]: uniform, area, angle) |
 //! | shading frequencies | flat ([`flat_vertices`] + [`ColouredShader`]), [`GouraudShader`], [`PhongShader`], Gouraud + Phong with the H-test ([`HighlightTest`], [`hybrid_vertices`], [`HybridShader`]), the exact-normal [`ReferenceShader`] |
+//! | speed-ups (seed 004) | [`ViewVector::Constant`], [`PhongShader`] without renormalization, [`precomputed_vertex_colours`], fast approximate Phong ([`fast_phong_vertices`], [`FastPhongShader`], [`quadratic_interpolate`]) |
 //! | texturing | [`SurfaceShader`] with [`TextureUse`] (replace, modulate, diffuse/specular/shininess input) |
 //! | normal perturbation | [`decode_normal`], [`perturb_normal`] (normal maps), [`generate_tangents`] (MikkTSpace), [`bump_normal`] and [`HeightField`] (bump maps) |
 //! | environment maps | [`Environment`] (cube, sphere map, equirect), [`DirectionSampler`], [`reflection_direction`] |
@@ -41,6 +42,7 @@ mod model;
 mod normals;
 mod perturb;
 mod scene;
+mod speedups;
 mod texturing;
 
 pub use atmosphere::{DepthCue, ExponentialFog, FogDistance, HeightFog};
@@ -58,4 +60,8 @@ pub use model::{Lighting, Material, Specular, blinn_phong_specular, lambert, pho
 pub use normals::{NormalWeighting, face_normal, vertex_normals};
 pub use perturb::{HeightField, bump_normal, decode_normal, generate_tangents, perturb_normal};
 pub use scene::{Scene, ShadeVertex, ViewVector, mesh_vertices};
+pub use speedups::{
+    FastPhongNodes, FastPhongShader, FastPhongVertex, fast_phong_vertices,
+    precomputed_vertex_colours, quadratic_interpolate,
+};
 pub use texturing::{SurfaceShader, SurfaceVarying, TextureUse};

@@ -65,16 +65,26 @@ impl<'a> SurfaceShader<'a> {
     /// Plain Phong shading of `scene`: add maps with struct update syntax.
     ///
     /// ```
-    /// use barytex_shade::{Camera, Material, Scene, SurfaceShader, TextureUse, ViewVector};
-    /// use barytex_texture::procedural::Checkerboard;
-    /// use glam::Vec3;
+    /// use barytex_raster::{draw, Framebuffer, PipelineState};
+    /// use barytex_shade::{mesh_vertices, Camera, Light, Material, Scene, SurfaceShader, TextureUse, ViewVector};
+    /// use barytex_texture::{procedural::Checkerboard, Limits};
+    /// use glam::{Vec3, Vec4};
     ///
-    /// # let scene = Scene { camera: Camera::look_at(Vec3::Z * 3.0, Vec3::ZERO, Vec3::Y, 1.0, 1.0,
-    /// #     0.1, 10.0).expect("ok"), lights: vec![], ambient: Vec3::ONE,
-    /// #     material: Material::default(), view: ViewVector::Local };
-    /// let checker = Checkerboard::default();
+    /// let scene = Scene {
+    ///     camera: Camera::look_at(Vec3::Z * 3.0, Vec3::ZERO, Vec3::Y, 1.0, 1.0, 0.1, 10.0).expect("ok"),
+    ///     lights: vec![Light::Directional { direction: -Vec3::Z, color: Vec3::ONE }],
+    ///     ambient: Vec3::splat(0.1),
+    ///     material: Material::default(),
+    ///     view: ViewVector::Local,
+    /// };
+    /// let checker = Checkerboard { even: Vec4::ONE, odd: Vec4::new(0.1, 0.1, 0.1, 1.0), checks: 8.0 };
+    /// // A checkered sphere: the texture is the diffuse reflectance.
     /// let shader = SurfaceShader { colour: Some((&checker, TextureUse::Diffuse)), ..SurfaceShader::new(&scene) };
-    /// # let _ = shader;
+    /// let (vertices, indices) = mesh_vertices(&barytex_uv::mesh::sphere(32, 16).expect("valid"));
+    /// let mut fb = Framebuffer::new(64, 64, Vec4::ZERO, &Limits::default())?;
+    /// let stats = draw(&mut fb, &shader, &PipelineState::default(), &vertices, &indices);
+    /// assert!(stats.fragments_shaded > 1000);
+    /// # Ok::<(), barytex_texture::TextureError>(())
     /// ```
     #[must_use]
     pub fn new(scene: &'a Scene) -> Self {

@@ -178,7 +178,7 @@ fn averaged_normals_can_all_be_parallel() {
     }
     // Angle weighting: each vertex sees as much of the face on its left as on its right.
     let n = vertex_normals(&p, &tris, NormalWeighting::Angle);
-    for k in 2..12 {
-        assert!(n[k].angle_between(Vec3::Y) < 1e-5, "{k}: {}", n[k]);
+    for (k, normal) in n.iter().enumerate().take(12).skip(2) {
+        assert!(normal.angle_between(Vec3::Y) < 1e-5, "{k}: {normal}");
     }
 }

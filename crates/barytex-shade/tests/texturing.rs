@@ -128,6 +128,7 @@ fn handedness_flips_the_bitangent() {
 }
 
 #[test]
+#[allow(clippy::needless_range_loop)]
 fn mikktspace_agrees_with_the_analytic_tangents() {
     let mesh = barytex_uv::mesh::sphere(32, 16).expect("valid");
     let generated = generate_tangents(&mesh).expect("regular");
