@@ -66,25 +66,31 @@ pub struct FastPhongNodes {
     pub specular: Vec3,
 }
 
-/// A vertex of [`FastPhongShader`]: its triangle's nodes and its barycentric corner.
+/// A vertex of [`FastPhongShader`]: its barycentric corner and its triangle's index into the
+/// node table (as `f32`, constant over the triangle, so only four floats are interpolated).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct FastPhongVertex {
     /// World-space position.
     pub position: Vec3,
-    /// The triangle's nodes.
-    pub nodes: FastPhongNodes,
     /// `(1, 0, 0)`, `(0, 1, 0)` or `(0, 0, 1)`.
     pub corner: Vec3,
+    /// The triangle's index in the node table (exact in `f32` below 2²⁴ triangles).
+    pub triangle: f32,
 }
 
 /// Prepares [`FastPhongShader`]: the lighting at six points per triangle (normals lerped and
-/// renormalized, as Phong shading sees them), the triangles unwelded.
+/// renormalized, as Phong shading sees them) in a node table, and the unwelded triangles'
+/// vertices and indices.
 #[must_use]
-pub fn fast_phong_vertices(mesh: &Mesh, scene: &Scene) -> (Vec<FastPhongVertex>, Vec<u32>) {
+pub fn fast_phong_vertices(
+    mesh: &Mesh,
+    scene: &Scene,
+) -> (Vec<FastPhongVertex>, Vec<u32>, Vec<FastPhongNodes>) {
     let key = scene.lights.first();
     let rest = scene.lights.get(1..).unwrap_or(&[]);
     let m = &scene.material;
     let mut vertices = Vec::with_capacity(mesh.indices.len() * 3);
+    let mut table = Vec::with_capacity(mesh.indices.len());
     for tri in valid_triangles(mesh) {
         let p = tri.map(|i| mesh.positions[i as usize]);
         let n = tri.map(|i| mesh.normals.get(i as usize).copied().unwrap_or(Vec3::ZERO));
@@ -123,16 +129,18 @@ pub fn fast_phong_vertices(mesh: &Mesh, scene: &Scene) -> (Vec<FastPhongVertex>,
             cos_alpha: six.map(|x| x.1),
             specular,
         };
+        let triangle = table.len() as f32;
+        table.push(nodes);
         for (k, corner) in [Vec3::X, Vec3::Y, Vec3::Z].into_iter().enumerate() {
             vertices.push(FastPhongVertex {
                 position: p[k],
-                nodes,
                 corner,
+                triangle,
             });
         }
     }
     let indices = (0..vertices.len() as u32).collect();
-    (vertices, indices)
+    (vertices, indices, table)
 }
 
 /// The quadratic (6-node Lagrange) interpolation of six values at barycentrics `b` (nodes:
@@ -169,27 +177,23 @@ where
 pub struct FastPhongShader<'a> {
     /// The scene (its camera and material are read).
     pub scene: &'a Scene,
+    /// The node table from [`fast_phong_vertices`].
+    pub nodes: &'a [FastPhongNodes],
 }
 
 impl Shader for FastPhongShader<'_> {
     type Vertex = FastPhongVertex;
-    type Varying = ([Vec3; 6], [f32; 6], Vec3, Vec3);
-    fn vertex(&self, v: &FastPhongVertex) -> (Vec4, Self::Varying) {
-        (
-            self.scene.clip(v.position),
-            (
-                v.nodes.smooth,
-                v.nodes.cos_alpha,
-                v.nodes.specular,
-                v.corner,
-            ),
-        )
+    type Varying = (Vec3, f32);
+    fn vertex(&self, v: &FastPhongVertex) -> (Vec4, (Vec3, f32)) {
+        (self.scene.clip(v.position), (v.corner, v.triangle))
     }
-    fn fragment(&self, f: &Fragment<'_, Self::Varying>) -> Option<Vec4> {
-        let (smooth, cos, specular, b) = &f.varying;
-        let mut colour = quadratic_interpolate(smooth, *b);
-        let c = quadratic_interpolate(cos, *b);
-        colour += *specular * crate::model::power(c, self.scene.material.shininess);
+    fn fragment(&self, f: &Fragment<'_, (Vec3, f32)>) -> Option<Vec4> {
+        let (b, triangle) = f.varying;
+        // The constant index comes back within rounding of itself: round to the nearest.
+        let nodes = self.nodes.get(triangle.round().max(0.0) as usize)?;
+        let mut colour = quadratic_interpolate(&nodes.smooth, b);
+        let c = quadratic_interpolate(&nodes.cos_alpha, b);
+        colour += nodes.specular * crate::model::power(c, self.scene.material.shininess);
         Some(colour.max(Vec3::ZERO).extend(1.0))
     }
 }

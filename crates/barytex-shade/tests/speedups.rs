@@ -98,8 +98,15 @@ fn fast_phong_error() {
     let mesh = sphere();
     let (v, i) = mesh_vertices(&mesh);
     let exact = render(&PhongShader::new(&scene), &v, &i);
-    let (fv, fi) = fast_phong_vertices(&mesh, &scene);
-    let fast = render(&FastPhongShader { scene: &scene }, &fv, &fi);
+    let (fv, fi, nodes) = fast_phong_vertices(&mesh, &scene);
+    let fast = render(
+        &FastPhongShader {
+            scene: &scene,
+            nodes: &nodes,
+        },
+        &fv,
+        &fi,
+    );
     let gouraud = render(&GouraudShader { scene: &scene }, &v, &i);
     let e = error(&fast, &exact);
     let g = error(&gouraud, &exact);
