@@ -12,6 +12,7 @@
 //! | texturing | [`SurfaceShader`] with [`TextureUse`] (replace, modulate, diffuse/specular/shininess input) |
 //! | normal perturbation | [`decode_normal`], [`perturb_normal`] (normal maps), [`generate_tangents`] (MikkTSpace), [`bump_normal`] and [`HeightField`] (bump maps) |
 //! | environment maps | [`Environment`] (cube, sphere map, equirect), [`DirectionSampler`], [`reflection_direction`] |
+//! | displacement mapping | [`displace`] ([`Seams`]: weld copies across uv seams, or not) |
 //! | atmosphere | [`DepthCue`], [`ExponentialFog`] ([`FogDistance`]), [`HeightFog`], [`atmosphere::blend`] |
 //!
 //! Conventions: linear-light colours; `N` (normal), `L` (towards the light) and `V` (towards the
@@ -34,6 +35,7 @@
 pub mod atmosphere;
 mod attenuation;
 pub mod camera;
+mod displacement;
 mod environment;
 mod frequency;
 mod highlight;
@@ -48,6 +50,7 @@ mod texturing;
 pub use atmosphere::{DepthCue, ExponentialFog, FogDistance, HeightFog};
 pub use attenuation::Attenuation;
 pub use camera::Camera;
+pub use displacement::{Seams, displace};
 pub use environment::{DirectionSampler, Environment, reflection_direction};
 pub use frequency::{
     ColouredShader, ColouredVertex, GouraudShader, PhongShader, ReferenceShader, flat_vertices,
