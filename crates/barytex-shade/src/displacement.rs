@@ -40,11 +40,13 @@ pub enum Seams {
 /// use barytex_shade::{displace, Seams};
 ///
 /// let sphere = barytex_uv::mesh::sphere(8, 4).expect("valid");
-/// // Every vertex 0.25 further out (the new ones start on the flat triangles, inside the unit
-/// // sphere); level 2 quadruples the triangles.
+/// // Every vertex 0.25 further out along its normal; level 2 quadruples the triangles.
 /// let grown = displace(&sphere, &|_uv: glam::Vec2| 1.0, 0.25, 2, Seams::Weld);
 /// assert_eq!(grown.indices.len(), 4 * sphere.indices.len());
-/// assert!(grown.positions.iter().all(|p| p.length() > 1.15 && p.length() < 1.2501));
+/// // The original vertices (normal = position on the unit sphere) move to radius 1.25.
+/// assert!(sphere.positions.iter().all(|p| {
+///     grown.positions.iter().any(|q| (*q - *p * 1.25).length() < 1e-6)
+/// }));
 /// ```
 #[must_use]
 pub fn displace(
