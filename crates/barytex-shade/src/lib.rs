@@ -13,6 +13,7 @@
 //! | normal perturbation | [`decode_normal`], [`perturb_normal`] (normal maps), [`generate_tangents`] (MikkTSpace), [`bump_normal`] and [`HeightField`] (bump maps) |
 //! | environment maps | [`Environment`] (cube, sphere map, equirect), [`DirectionSampler`], [`reflection_direction`] |
 //! | displacement mapping | [`displace`] ([`Seams`]: weld copies across uv seams, or not) |
+//! | octree rendering | [`Octree`], [`child_order`], [`render_back_to_front`] (no depth test), [`render_front_to_back`] with a [`CoverageQuadtree`], [`render_depth_tested`] |
 //! | atmosphere | [`DepthCue`], [`ExponentialFog`] ([`FogDistance`]), [`HeightFog`], [`atmosphere::blend`] |
 //!
 //! Conventions: linear-light colours; `N` (normal), `L` (towards the light) and `V` (towards the
@@ -42,6 +43,7 @@ mod highlight;
 mod light;
 mod model;
 mod normals;
+mod octree;
 mod perturb;
 mod scene;
 mod speedups;
@@ -61,6 +63,10 @@ pub use highlight::{
 pub use light::{Light, LightSample, SpotShape};
 pub use model::{Lighting, Material, Specular, blinn_phong_specular, lambert, phong_specular};
 pub use normals::{NormalWeighting, face_normal, vertex_normals};
+pub use octree::{
+    CoverageQuadtree, FrontToBackStats, Octree, Voxel, child_order, render_back_to_front,
+    render_depth_tested, render_front_to_back,
+};
 pub use perturb::{HeightField, bump_normal, decode_normal, generate_tangents, perturb_normal};
 pub use scene::{Scene, ShadeVertex, ViewVector, mesh_vertices};
 pub use speedups::{
