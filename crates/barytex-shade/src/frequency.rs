@@ -5,9 +5,11 @@
 //! | [`ColouredShader`] on [`flat_vertices`] | once per triangle, at its centroid with the face normal | nothing (one colour) |
 //! | [`GouraudShader`] | once per vertex | colour |
 //! | [`PhongShader`] | once per pixel | position and normal (renormalized) |
+//! | [`SlerpPhongShader`] on [`slerp_vertices`] | once per pixel | position and barycentrics; the normal by SLERP |
 //! | [`HybridShader`](crate::HybridShader) | per vertex, and per pixel on triangles that pass the highlight test | colour, position, normal |
 //! | [`ReferenceShader`] | once per pixel with the surface's exact normal | position |
 
+use barytex_interp::{NormalInterpolation, interpolate_normal};
 use barytex_raster::{Fragment, Shader};
 use barytex_uv::Mesh;
 use glam::{Vec3, Vec4};
@@ -140,6 +142,86 @@ impl Shader for PhongShader<'_> {
             n
         };
         Some(self.scene.light(p, n).total().extend(1.0))
+    }
+}
+
+/// A vertex of [`SlerpPhongShader`]: its barycentric corner and its triangle's index into the
+/// table of vertex-normal triples (constant over the triangle).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SlerpVertex {
+    /// World-space position.
+    pub position: Vec3,
+    /// `(1, 0, 0)`, `(0, 1, 0)` or `(0, 0, 1)`.
+    pub corner: Vec3,
+    /// The triangle's index in the normal table (exact in `f32` below 2²⁴ triangles).
+    pub triangle: f32,
+}
+
+/// Prepares [`SlerpPhongShader`]: unwelded triangles and their unit vertex normals.
+#[must_use]
+pub fn slerp_vertices(mesh: &Mesh) -> (Vec<SlerpVertex>, Vec<u32>, Vec<[Vec3; 3]>) {
+    let mut vertices = Vec::with_capacity(mesh.indices.len() * 3);
+    let mut table = Vec::with_capacity(mesh.indices.len());
+    for tri in valid_triangles(mesh) {
+        let triangle = table.len() as f32;
+        table.push(tri.map(|i| {
+            mesh.normals
+                .get(i as usize)
+                .copied()
+                .unwrap_or(Vec3::ZERO)
+                .normalize_or_zero()
+        }));
+        for (k, corner) in [Vec3::X, Vec3::Y, Vec3::Z].into_iter().enumerate() {
+            vertices.push(SlerpVertex {
+                position: mesh.positions[tri[k] as usize],
+                corner,
+                triangle,
+            });
+        }
+    }
+    let indices = (0..vertices.len() as u32).collect();
+    (vertices, indices, table)
+}
+
+/// The normal at barycentrics `b` by two SLERPs ([`interpolate_normal`] with
+/// [`NormalInterpolation::Slerp`]): along edge 01 at `b1/(b0 + b1)`, then towards `n2` at `b2`.
+/// Evenly spaced in angle along every edge (lerp + renormalize is not); not symmetric in the
+/// three vertices inside. Zero normals give zero.
+#[must_use]
+pub fn slerp_triangle_normal(n: [Vec3; 3], b: Vec3) -> Vec3 {
+    let s = b.x + b.y;
+    let n01 = if s > 0.0 {
+        interpolate_normal(n[0], n[1], b.y / s, NormalInterpolation::Slerp)
+    } else {
+        n[0]
+    };
+    interpolate_normal(n01, n[2], b.z, NormalInterpolation::Slerp)
+}
+
+/// Phong shading with the normal interpolated by SLERP ([`slerp_triangle_normal`]) instead of
+/// lerp + renormalize: even angular spacing, a few times the cost per pixel.
+#[derive(Clone, Copy, Debug)]
+pub struct SlerpPhongShader<'a> {
+    /// Camera, lights, material.
+    pub scene: &'a Scene,
+    /// The normal table from [`slerp_vertices`].
+    pub normals: &'a [[Vec3; 3]],
+}
+
+impl Shader for SlerpPhongShader<'_> {
+    type Vertex = SlerpVertex;
+    type Varying = (Vec3, Vec3, f32);
+    fn vertex(&self, v: &SlerpVertex) -> (Vec4, (Vec3, Vec3, f32)) {
+        (
+            self.scene.clip(v.position),
+            (v.position, v.corner, v.triangle),
+        )
+    }
+    fn fragment(&self, f: &Fragment<'_, (Vec3, Vec3, f32)>) -> Option<Vec4> {
+        let (p, b, triangle) = f.varying;
+        let n = self.normals.get(triangle.round().max(0.0) as usize)?;
+        let normal = slerp_triangle_normal(*n, b);
+        Some(self.scene.light(p, normal).total().extend(1.0))
     }
 }
 

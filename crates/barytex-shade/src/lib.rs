@@ -7,7 +7,7 @@
 //! | illumination models | [`lambert`], [`phong_specular`], [`blinn_phong_specular`], [`Material`], [`Lighting`], [`Specular`] |
 //! | camera and scene | [`Camera`] ([`camera::look_at`], [`camera::perspective`]), [`Scene`], [`ViewVector`], [`ShadeVertex`], [`mesh_vertices`] |
 //! | normals | [`face_normal`], [`vertex_normals`] ([`NormalWeighting`]: uniform, area, angle) |
-//! | shading frequencies | flat ([`flat_vertices`] + [`ColouredShader`]), [`GouraudShader`], [`PhongShader`], Gouraud + Phong with the H-test ([`HighlightTest`], [`hybrid_vertices`], [`HybridShader`]), the exact-normal [`ReferenceShader`] |
+//! | shading frequencies | flat ([`flat_vertices`] + [`ColouredShader`]), [`GouraudShader`], [`PhongShader`] (or [`SlerpPhongShader`]), Gouraud + Phong with the H-test ([`HighlightTest`], [`hybrid_vertices`], [`HybridShader`]), the exact-normal [`ReferenceShader`] |
 //! | speed-ups (seed 004) | [`ViewVector::Constant`], [`PhongShader`] without renormalization, [`precomputed_vertex_colours`], fast approximate Phong ([`fast_phong_vertices`], [`FastPhongShader`], [`quadratic_interpolate`]) |
 //! | texturing | [`SurfaceShader`] with [`TextureUse`] (replace, modulate, diffuse/specular/shininess input) |
 //! | normal perturbation | [`decode_normal`], [`perturb_normal`] (normal maps), [`generate_tangents`] (MikkTSpace), [`bump_normal`] and [`HeightField`] (bump maps) |
@@ -55,7 +55,8 @@ pub use camera::Camera;
 pub use displacement::{Seams, displace};
 pub use environment::{DirectionSampler, Environment, reflection_direction};
 pub use frequency::{
-    ColouredShader, ColouredVertex, GouraudShader, PhongShader, ReferenceShader, flat_vertices,
+    ColouredShader, ColouredVertex, GouraudShader, PhongShader, ReferenceShader, SlerpPhongShader,
+    SlerpVertex, flat_vertices, slerp_triangle_normal, slerp_vertices,
 };
 pub use highlight::{
     HighlightTest, HighlightVerdict, HybridShader, HybridStats, HybridVertex, hybrid_vertices,

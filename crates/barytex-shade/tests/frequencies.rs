@@ -182,3 +182,119 @@ fn averaged_normals_can_all_be_parallel() {
         assert!(normal.angle_between(Vec3::Y) < 1e-5, "{k}: {normal}");
     }
 }
+
+#[test]
+fn slerp_phong_is_close_to_phong() {
+    let scene = scene();
+    let mesh = barytex_uv::mesh::sphere(24, 12).expect("valid");
+    let (vertices, indices) = mesh_vertices(&mesh);
+    let reference = traced_sphere(&scene);
+    let phong = render(&PhongShader::new(&scene), &vertices, &indices);
+    let (sv, si, normals) = barytex_shade::slerp_vertices(&mesh);
+    let slerped = render(
+        &barytex_shade::SlerpPhongShader {
+            scene: &scene,
+            normals: &normals,
+        },
+        &sv,
+        &si,
+    );
+    let gouraud = render(&GouraudShader { scene: &scene }, &vertices, &indices);
+    let (e_phong, e_slerp, e_gouraud) = (
+        error(&phong, &reference),
+        error(&slerped, &reference),
+        error(&gouraud, &reference),
+    );
+    let between = error(&slerped, &phong);
+    println!("vs traced sphere: phong {e_phong:?}, slerp {e_slerp:?}; slerp vs phong {between:?}");
+    assert!(e_slerp.0 < e_gouraud.0 / 2.0);
+    assert!(e_slerp.0 < 2.0 * e_phong.0);
+    assert!(between.1 < 0.01, "{between:?}");
+}
+
+#[test]
+fn slerp_triangle_normal_corners_and_edges() {
+    let n = [Vec3::X, Vec3::Y, Vec3::Z];
+    assert_eq!(barytex_shade::slerp_triangle_normal(n, Vec3::X), Vec3::X);
+    assert!((barytex_shade::slerp_triangle_normal(n, Vec3::Y) - Vec3::Y).length() < 1e-6);
+    assert!((barytex_shade::slerp_triangle_normal(n, Vec3::Z) - Vec3::Z).length() < 1e-6);
+    // A quarter of the way along edge 01: 22.5° from X (lerp + renormalize gives 18.4°).
+    let q = barytex_shade::slerp_triangle_normal(n, Vec3::new(0.75, 0.25, 0.0));
+    assert!((q.angle_between(Vec3::X).to_degrees() - 22.5).abs() < 1e-4);
+    let c = barytex_shade::slerp_triangle_normal(n, Vec3::splat(1.0 / 3.0));
+    assert!((c.length() - 1.0).abs() < 1e-6);
+    assert_eq!(
+        barytex_shade::slerp_triangle_normal([Vec3::ZERO; 3], Vec3::X),
+        Vec3::ZERO
+    );
+}
+
+/// The seed: "the result depends on the polygon's orientation if the polygons are not
+/// triangles" — a quad split along one diagonal or the other interpolates different colours.
+#[test]
+fn quads_shade_differently_when_split_along_the_other_diagonal() {
+    use barytex_shade::{ColouredVertex, Scene};
+    let scene: Scene = scene();
+    let quad = [
+        Vec3::new(-0.8, -0.8, 0.0),
+        Vec3::new(0.8, -0.8, 0.0),
+        Vec3::new(0.8, 0.8, 0.0),
+        Vec3::new(-0.8, 0.8, 0.0),
+    ];
+    let colours = [Vec3::ONE, Vec3::ZERO, Vec3::ONE, Vec3::ZERO];
+    let vertices: Vec<ColouredVertex> = quad
+        .iter()
+        .zip(colours)
+        .map(|(&position, colour)| ColouredVertex { position, colour })
+        .collect();
+    let shader = ColouredShader { scene: &scene };
+    let a = render(&shader, &vertices, &[0, 1, 2, 0, 2, 3]);
+    let b = render(&shader, &vertices, &[0, 1, 3, 1, 2, 3]);
+    let centre = |fb: &barytex_raster::Framebuffer| fb.pixel(64, 64).expect("in").x;
+    // Along diagonal 0–2 both ends are white; along 1–3 both are black.
+    assert!(centre(&a) > 0.9, "{}", centre(&a));
+    assert!(centre(&b) < 0.1, "{}", centre(&b));
+}
+
+#[test]
+fn hostile_meshes_never_panic() {
+    let scene = scene();
+    let mut mesh = barytex_uv::mesh::sphere(8, 4).expect("valid");
+    mesh.positions[3] = Vec3::NAN;
+    mesh.normals[4] = Vec3::ZERO;
+    mesh.normals[5] = Vec3::splat(f32::INFINITY);
+    mesh.indices.push([0, 1, 9999]);
+    mesh.indices.push([0, 0, 0]);
+    let (v, i) = mesh_vertices(&mesh);
+    let _ = render(&GouraudShader { scene: &scene }, &v, &i);
+    let _ = render(&PhongShader::new(&scene), &v, &i);
+    let (fv, fi) = flat_vertices(&mesh, &scene);
+    let _ = render(&ColouredShader { scene: &scene }, &fv, &fi);
+    let (hv, hi, _) = hybrid_vertices(&mesh, &scene, &HighlightTest::default());
+    let _ = render(&HybridShader { scene: &scene }, &hv, &hi);
+    let (sv, si, n) = barytex_shade::slerp_vertices(&mesh);
+    let _ = render(
+        &barytex_shade::SlerpPhongShader {
+            scene: &scene,
+            normals: &n,
+        },
+        &sv,
+        &si,
+    );
+    let (qv, qi, nodes) = barytex_shade::fast_phong_vertices(&mesh, &scene);
+    let _ = render(
+        &barytex_shade::FastPhongShader {
+            scene: &scene,
+            nodes: &nodes,
+        },
+        &qv,
+        &qi,
+    );
+    assert!(
+        barytex_shade::Camera::look_at(Vec3::ZERO, Vec3::ZERO, Vec3::Y, 1.0, 1.0, 0.1, 1.0)
+            .is_none()
+    );
+    assert!(
+        barytex_shade::Camera::look_at(Vec3::ZERO, Vec3::Y, Vec3::Y, 1.0, 1.0, 0.1, 1.0).is_none()
+    );
+}
