@@ -298,3 +298,71 @@ fn hostile_meshes_never_panic() {
         barytex_shade::Camera::look_at(Vec3::ZERO, Vec3::Y, Vec3::Y, 1.0, 1.0, 0.1, 1.0).is_none()
     );
 }
+
+#[test]
+fn h_test_stages() {
+    use barytex_shade::{Camera, HighlightVerdict, Light, Scene, Specular, ViewVector};
+    let scene = Scene {
+        camera: Camera::look_at(Vec3::Z * 5.0, Vec3::ZERO, Vec3::Y, 1.0, 1.0, 0.1, 10.0)
+            .expect("regular"),
+        lights: vec![Light::Directional {
+            direction: -Vec3::Z,
+            color: Vec3::ONE,
+        }],
+        ambient: Vec3::ZERO,
+        material: Material {
+            shininess: 400.0,
+            ..Material::default()
+        },
+        view: ViewVector::Constant(Vec3::Z),
+    };
+    // A distant eye and light (constant V = L = +z): the mirror peak is where the normal is +z.
+    let test = HighlightTest::default();
+    let p = [
+        Vec3::new(-1.0, -1.0, 0.0),
+        Vec3::new(1.0, -1.0, 0.0),
+        Vec3::new(0.0, 1.0, 0.0),
+    ];
+    // A vertex normal facing the eye and the light: stage 2.
+    let facing = [Vec3::Z, Vec3::X, Vec3::Y];
+    assert_eq!(test.run(&scene, p, facing), HighlightVerdict::Vertex(0));
+    // Normals tilted ±30° about y on edge 01: the peak is at the edge's midpoint (stage 3).
+    let tilt = |a: f32| Vec3::new(a.sin(), 0.0, a.cos());
+    let edge = [tilt(0.5), tilt(-0.5), Vec3::new(0.0, 0.8, 0.6)];
+    assert_eq!(test.run(&scene, p, edge), HighlightVerdict::Edge(0));
+    // All normals turned away from the mirror direction: stage 5.
+    let away = [
+        Vec3::X,
+        Vec3::new(0.9, 0.1, 0.1).normalize(),
+        Vec3::new(0.9, -0.1, 0.2).normalize(),
+    ];
+    assert_eq!(test.run(&scene, p, away), HighlightVerdict::None);
+    // A matte material: stage 1.
+    let matte = Scene {
+        material: Material {
+            lobe: Specular::None,
+            ..scene.material
+        },
+        ..scene.clone()
+    };
+    assert_eq!(test.run(&matte, p, facing), HighlightVerdict::NoSpecular);
+}
+
+/// The seed: "interpolated shading does nothing for the polygonal silhouette" — Gouraud and Phong
+/// cover exactly the same pixels, and both miss pixels the true sphere covers.
+#[test]
+fn silhouettes_stay_polygonal() {
+    let scene = scene();
+    let mesh = barytex_uv::mesh::sphere(12, 6).expect("valid");
+    let (v, i) = mesh_vertices(&mesh);
+    let covered = |fb: &barytex_raster::Framebuffer| {
+        (0..SIZE * SIZE)
+            .filter(|k| fb.pixel(k % SIZE, k / SIZE).expect("in").w > 0.0)
+            .count()
+    };
+    let gouraud = covered(&render(&GouraudShader { scene: &scene }, &v, &i));
+    let phong = covered(&render(&PhongShader::new(&scene), &v, &i));
+    let exact = covered(&traced_sphere(&scene));
+    assert_eq!(gouraud, phong);
+    assert!(exact > phong + 100, "{exact} {phong}");
+}
