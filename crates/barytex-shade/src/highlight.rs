@@ -11,7 +11,9 @@ use glam::{Mat3, Vec3, Vec4};
 use crate::Scene;
 use crate::scene::valid_triangles;
 
-/// The five-stage highlight test.
+/// The five-stage highlight test, after one pre-check: a triangle that faces away from the eye
+/// (its geometric normal points away from the camera) is culled by the rasterizer, so it is not
+/// tested at all ([`HighlightVerdict::BackFacing`]).
 ///
 /// 1. A material without a specular term has no highlight anywhere: **reject**.
 /// 2. Any vertex whose specular light reaches `threshold`: **accept**.
@@ -43,6 +45,8 @@ impl Default for HighlightTest {
 /// Which stage of the [`HighlightTest`] decided.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum HighlightVerdict {
+    /// The pre-check: the triangle faces away from the eye (or is degenerate).
+    BackFacing,
     /// Stage 1: the material has no specular term.
     NoSpecular,
     /// Stage 2: this vertex shows the highlight.
@@ -93,6 +97,12 @@ impl HighlightTest {
         {
             return HighlightVerdict::NoSpecular;
         }
+        let eye = scene.camera.eye;
+        let centroid = (p[0] + p[1] + p[2]) / 3.0;
+        match crate::face_normal(p[0], p[1], p[2]) {
+            Some(face) if face.dot(eye - centroid) > 0.0 => {}
+            _ => return HighlightVerdict::BackFacing,
+        }
         let visible = |q: Vec3, normal: Vec3| {
             scene
                 .light(q, normal.normalize_or_zero())
@@ -115,7 +125,6 @@ impl HighlightTest {
                 }
             }
         }
-        let centroid = (p[0] + p[1] + p[2]) / 3.0;
         if visible(centroid, n[0] + n[1] + n[2]) {
             return HighlightVerdict::Interior;
         }
@@ -165,6 +174,8 @@ pub struct HybridStats {
     pub triangles: usize,
     /// Triangles that passed the H-test (Phong path).
     pub phong: usize,
+    /// Triangles not tested because they face away from the eye.
+    pub back_facing: usize,
     /// Decided by stage 2 (a vertex).
     pub by_vertex: usize,
     /// Decided by stage 3 (an edge).
@@ -206,6 +217,7 @@ pub fn hybrid_vertices(
             HighlightVerdict::Vertex(_) => stats.by_vertex += 1,
             HighlightVerdict::Edge(_) => stats.by_edge += 1,
             HighlightVerdict::Interior => stats.by_interior += 1,
+            HighlightVerdict::BackFacing => stats.back_facing += 1,
             HighlightVerdict::NoSpecular | HighlightVerdict::None => {}
         }
         let phong = if verdict.has_highlight() {
