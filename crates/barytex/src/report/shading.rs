@@ -133,7 +133,7 @@ fn frequencies_table(mesh: &Mesh, label: &str, size: u32, runs: usize) -> (Table
     )
     .expect("small");
     let test = HighlightTest::default();
-    let mut phong_triangles = (0, 0);
+    let mut phong_triangles = (0, 0, 0);
     type Method<'a> = (&'a str, bool, Box<dyn FnMut() -> Framebuffer + Send + 'a>);
     let mut methods: Vec<Method<'_>> = vec![
         (
@@ -171,7 +171,7 @@ fn frequencies_table(mesh: &Mesh, label: &str, size: u32, runs: usize) -> (Table
             false,
             Box::new(|| {
                 let (v, i, stats) = hybrid_vertices(mesh, &scene, &test);
-                phong_triangles = (stats.phong, stats.triangles);
+                phong_triangles = (stats.phong, stats.triangles, stats.back_facing);
                 frame(size, &HybridShader { scene: &scene }, &v, &i)
             }),
         ),
@@ -220,10 +220,12 @@ fn frequencies_table(mesh: &Mesh, label: &str, size: u32, runs: usize) -> (Table
         ..Table::default()
     };
     let note = format!(
-        "H-test on the {label} sphere: {} of {} triangles ({:.1} %) took the Phong path.",
+        "H-test on the {label} sphere: {} of {} triangles ({:.1} %) took the Phong path; {} \
+         back-facing triangles were not tested.",
         phong_triangles.0,
         phong_triangles.1,
-        100.0 * phong_triangles.0 as f64 / phong_triangles.1.max(1) as f64
+        100.0 * phong_triangles.0 as f64 / phong_triangles.1.max(1) as f64,
+        phong_triangles.2
     );
     (table, note)
 }
