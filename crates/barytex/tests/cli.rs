@@ -89,6 +89,11 @@ fn quick_report_writes_every_family() {
     ] {
         assert!(raster.contains(heading), "missing {heading:?}");
     }
+    let shading = std::fs::read_to_string(dir.join("shading.md")).unwrap();
+    assert!(index.contains("shading.md"), "{index}");
+    for heading in ["Gouraud", "hybrid", "fast Phong", "SLERP"] {
+        assert!(shading.contains(heading), "missing {heading:?}");
+    }
     let strip = std::fs::read(dir.join("texture-filters-grazing.png")).unwrap();
     assert!(strip.starts_with(b"\x89PNG"), "not a PNG");
     // One progress line per family on stderr.
