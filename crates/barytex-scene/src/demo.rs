@@ -16,6 +16,7 @@ use crate::camera::{Projection, SceneCamera};
 use crate::light::{Light, LightKind, SceneLight};
 use crate::material::{Material, TextureRef};
 use crate::mesh::{Mesh, Primitive};
+use crate::render::{AntiAliasing, Filter, RenderOptions};
 use crate::sampler::{MagFilter, MinFilter, Sampler, Wrap};
 use crate::scene::{MeshInstance, Scene, SceneImage, Texture};
 use crate::topology::Topology;
@@ -152,6 +153,29 @@ fn look_at(eye: Vec3, target: Vec3) -> Mat4 {
         (-forward).extend(0.0),
         eye.extend(1.0),
     )
+}
+
+/// Exponential fog density of the demo (per unit of distance): the floor fades into the
+/// background towards the horizon.
+pub const DEMO_FOG: f32 = 0.04;
+
+/// The options `barytex` renders the demo with: anisotropic filtering (8 probes), 4× MSAA,
+/// Blinn–Phong, fog in the background colour.
+#[must_use]
+pub fn demo_options(width: u32, height: u32) -> RenderOptions {
+    let defaults = RenderOptions::default();
+    RenderOptions {
+        width,
+        height,
+        filter: Filter::Anisotropic(8),
+        anti_aliasing: AntiAliasing::Msaa(4),
+        fog: Some(barytex_shade::ExponentialFog {
+            density: DEMO_FOG,
+            colour: defaults.background.truncate(),
+            distance: barytex_shade::FogDistance::Euclidean,
+        }),
+        ..defaults
+    }
 }
 
 /// The demo scene. (The generated meshes use fixed, valid resolutions; were one ever refused,

@@ -51,7 +51,7 @@ pub use options::{AntiAliasing, CameraChoice, Filter, RenderOptions, Shading};
 use crate::light::LightKind;
 use crate::material::{AlphaMode, TextureRef};
 use crate::scene::Scene;
-use material_shader::{MaterialShader, ShaderMaterial, WorldLight, WorldPrimitive};
+use material_shader::{Frequency, MaterialShader, ShaderMaterial, WorldLight, WorldPrimitive};
 use textures::Textures;
 
 /// Why a scene could not be rendered.
@@ -115,6 +115,11 @@ pub struct RenderStats {
     pub mip_chains: usize,
     /// Textures whose filter uses mipmaps but which are never minified (no chain built).
     pub mips_skipped: usize,
+    /// Hybrid shading: triangles the highlight test sent to Phong shading, and the rest
+    /// (Gouraud).
+    pub hybrid_phong_triangles: usize,
+    /// Hybrid shading: triangles shaded Gouraud.
+    pub hybrid_gouraud_triangles: usize,
     /// Seconds preparing geometry, textures and mip chains.
     pub prepare_seconds: f64,
     /// Seconds rasterizing and shading (the two are interleaved per pixel).
@@ -136,6 +141,9 @@ pub struct Rendered {
 struct DrawItem<'a> {
     primitive: WorldPrimitive<'a>,
     indices: Vec<u32>,
+    /// Under the hybrid mode, the triangles the H-test sent to Phong shading (the rest, in
+    /// `indices`, are shaded Gouraud).
+    phong_indices: Vec<u32>,
     vertices: Vec<u32>,
     material: ShaderMaterial,
     double_sided: bool,
@@ -193,6 +201,122 @@ fn uv_per_pixel(
     out
 }
 
+/// Flat shading, one evaluation per polygon: unwelds the primitive (three vertices per
+/// triangle) and gives each triangle's vertices the light at its centroid under its face
+/// normal (turned towards the eye), so the shader interpolates a constant.
+fn flatten(item: &mut DrawItem<'_>, lights: &[WorldLight], eye: Vec3) {
+    use std::borrow::Cow;
+    let p = &item.primitive;
+    let corner = |k: u32| k as usize;
+    let pick2 = |v: &Option<Cow<'_, [Vec2]>>| {
+        v.as_ref().map(|v| {
+            Cow::Owned(
+                item.indices
+                    .iter()
+                    .map(|&k| v.get(corner(k)).copied().unwrap_or_default())
+                    .collect(),
+            )
+        })
+    };
+    let uv0 = pick2(&p.uv0);
+    let uv1 = pick2(&p.uv1);
+    let colors = p.colors.as_ref().map(|v| {
+        Cow::Owned(
+            item.indices
+                .iter()
+                .map(|&k| v.get(corner(k)).copied().unwrap_or(Vec4::ONE))
+                .collect(),
+        )
+    });
+    let positions: Vec<Vec3> = item
+        .indices
+        .iter()
+        .map(|&k| p.positions.get(corner(k)).copied().unwrap_or(Vec3::NAN))
+        .collect();
+    let shininess = material_shader::shininess(item.material.roughness);
+    let mut lighting = Vec::with_capacity(positions.len());
+    for t in positions.chunks_exact(3) {
+        let centroid = (t[0] + t[1] + t[2]) / 3.0;
+        let view = (eye - centroid).normalize_or_zero();
+        let mut n = (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero();
+        if n.dot(view) < 0.0 {
+            n = -n;
+        }
+        let terms = material_shader::light_terms(lights, n, view, centroid, shininess);
+        lighting.extend([terms; 3]);
+    }
+    let count = positions.len() as u32;
+    item.primitive = WorldPrimitive {
+        positions,
+        normals: None,
+        uv0,
+        uv1,
+        colors,
+        lighting: Some(lighting),
+    };
+    item.indices = (0..count).collect();
+    item.vertices = (0..count).collect();
+}
+
+/// The H-test's view of one material under the render's camera and lights: the same
+/// normalized Blinn–Phong lobe the shader evaluates, as a `barytex_shade` scene.
+fn highlight_scene(
+    camera: &RenderCamera,
+    lights: &[WorldLight],
+    m: &ShaderMaterial,
+) -> barytex_shade::Scene {
+    let alpha_r = (m.roughness * m.roughness).clamp(0.02, 1.0);
+    let shininess = (2.0 / (alpha_r * alpha_r) - 2.0).max(1.0);
+    let base = m.base_color.truncate();
+    let specular = Vec3::splat(0.04).lerp(base, m.metallic)
+        * ((shininess + 8.0) / (8.0 * std::f32::consts::PI));
+    let lights = lights
+        .iter()
+        .map(|l| match l.kind {
+            LightKind::Directional => barytex_shade::Light::Directional {
+                direction: l.direction,
+                color: l.radiance,
+            },
+            LightKind::Point => barytex_shade::Light::Point {
+                position: l.position,
+                color: l.radiance,
+                attenuation: barytex_shade::Attenuation::INVERSE_SQUARE,
+            },
+            LightKind::Spot {
+                inner_cone_angle,
+                outer_cone_angle,
+            } => barytex_shade::Light::Spot {
+                position: l.position,
+                direction: l.direction,
+                color: l.radiance,
+                attenuation: barytex_shade::Attenuation::INVERSE_SQUARE,
+                shape: barytex_shade::SpotShape::Cone {
+                    inner: inner_cone_angle,
+                    outer: outer_cone_angle,
+                },
+            },
+        })
+        .collect();
+    barytex_shade::Scene {
+        camera: barytex_shade::Camera {
+            eye: camera.eye,
+            view: camera.view,
+            projection: camera.projection,
+        },
+        lights,
+        ambient: Vec3::ZERO,
+        material: barytex_shade::Material {
+            emission: Vec3::ZERO,
+            ambient: Vec3::ZERO,
+            diffuse: Vec3::ZERO,
+            specular,
+            shininess,
+            lobe: barytex_shade::Specular::BlinnPhong,
+        },
+        view: barytex_shade::ViewVector::Local,
+    }
+}
+
 fn add_stats(total: &mut DrawStats, s: &DrawStats) {
     total.triangles_in += s.triangles_in;
     total.dropped_bad_index += s.dropped_bad_index;
@@ -223,7 +347,7 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
     let camera = choose_camera(scene, options)?;
     let view_projection = camera.projection * camera.view;
     let size = Vec2::new(width as f32, height as f32);
-    let lit = options.shading == Shading::Phong;
+    let lit = options.shading != Shading::Unlit;
 
     // Geometry in world space, with what texture preparation needs to know about it.
     let mut items: Vec<DrawItem<'_>> = Vec::new();
@@ -251,13 +375,15 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
             items.push(DrawItem {
                 uv_per_pixel: uv_per_pixel(&clip, [uv0, uv1], &primitive.triangles, size),
                 indices: primitive.triangles.iter().flatten().copied().collect(),
+                phong_indices: Vec::new(),
                 vertices: (0..positions.len() as u32).collect(),
                 primitive: WorldPrimitive {
                     positions,
                     normals,
-                    uv0,
-                    uv1,
-                    colors: primitive.colors0.as_deref(),
+                    uv0: uv0.map(std::borrow::Cow::Borrowed),
+                    uv1: uv1.map(std::borrow::Cow::Borrowed),
+                    colors: primitive.colors0.as_deref().map(std::borrow::Cow::Borrowed),
+                    lighting: None,
                 },
                 material: ShaderMaterial {
                     base_color: material.base_color_factor,
@@ -371,6 +497,50 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
             range: None,
         });
     }
+    if options.shading == Shading::Flat {
+        for item in &mut items {
+            if item.material.lit {
+                flatten(item, &lights, camera.eye);
+            }
+        }
+    }
+    let (mut hybrid_phong, mut hybrid_gouraud) = (0, 0);
+    if options.shading == Shading::Hybrid {
+        for item in &mut items {
+            if !item.material.lit || item.primitive.normals.is_none() {
+                continue;
+            }
+            let test = highlight_scene(&camera, &lights, &item.material);
+            let (mut phong, mut gouraud) = (Vec::new(), Vec::new());
+            for t in item.indices.chunks_exact(3) {
+                let p = [t[0], t[1], t[2]].map(|i| {
+                    item.primitive
+                        .positions
+                        .get(i as usize)
+                        .copied()
+                        .unwrap_or(Vec3::NAN)
+                });
+                let n = [t[0], t[1], t[2]].map(|i| {
+                    item.primitive
+                        .normals
+                        .as_ref()
+                        .and_then(|n| n.get(i as usize))
+                        .copied()
+                        .unwrap_or_default()
+                });
+                let verdict = barytex_shade::HighlightTest::default().run(&test, p, n);
+                if verdict.has_highlight() {
+                    phong.extend_from_slice(t);
+                } else {
+                    gouraud.extend_from_slice(t);
+                }
+            }
+            hybrid_phong += phong.len() / 3;
+            hybrid_gouraud += gouraud.len() / 3;
+            item.indices = gouraud;
+            item.phong_indices = phong;
+        }
+    }
     let prepare_seconds = started.elapsed().as_secs_f64();
 
     // The passes.
@@ -384,42 +554,58 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
         passes += 1;
         for &i in &order {
             let item = &items[i];
-            let shader = MaterialShader {
-                view_projection,
-                eye: camera.eye,
-                primitive: &item.primitive,
-                material: item.material,
-                textures: &textures.list,
-                lights: &lights,
-                ambient: Vec3::splat(0.03),
+            let frequency = match options.shading {
+                Shading::Flat => Frequency::Flat,
+                Shading::Gouraud | Shading::Hybrid => Frequency::Gouraud,
+                Shading::Unlit | Shading::Phong => Frequency::Phong,
             };
-            let state = PipelineState {
-                cull: if item.double_sided {
-                    CullMode::None
-                } else {
-                    CullMode::Back
-                },
-                front_face: if item.flips_winding {
-                    FrontFace::Cw
-                } else {
-                    FrontFace::Ccw
-                },
-                viewport: Some(Viewport {
-                    x: shift.x,
-                    y: shift.y,
-                    ..Viewport::full(width, height)
-                }),
-                blend: if item.blended {
-                    Blend::Over
-                } else {
-                    Blend::Replace
-                },
-                depth_write: !item.blended,
-                sample_shading,
-                ..PipelineState::default()
-            };
-            let s = draw(fb, &shader, &state, &item.vertices, &item.indices);
-            add_stats(&mut total, &s);
+            let passes: [(Frequency, &[u32]); 2] = [
+                (frequency, &item.indices),
+                (Frequency::Phong, &item.phong_indices),
+            ];
+            for (frequency, indices) in passes {
+                if indices.is_empty() {
+                    continue;
+                }
+                let shader = MaterialShader {
+                    frequency,
+                    fog: options.fog.map(|f| (f, forward)),
+                    view_projection,
+                    eye: camera.eye,
+                    primitive: &item.primitive,
+                    material: item.material,
+                    textures: &textures.list,
+                    lights: &lights,
+                    ambient: Vec3::splat(0.03),
+                };
+                let state = PipelineState {
+                    cull: if item.double_sided {
+                        CullMode::None
+                    } else {
+                        CullMode::Back
+                    },
+                    front_face: if item.flips_winding {
+                        FrontFace::Cw
+                    } else {
+                        FrontFace::Ccw
+                    },
+                    viewport: Some(Viewport {
+                        x: shift.x,
+                        y: shift.y,
+                        ..Viewport::full(width, height)
+                    }),
+                    blend: if item.blended {
+                        Blend::Over
+                    } else {
+                        Blend::Replace
+                    },
+                    depth_write: !item.blended,
+                    sample_shading,
+                    ..PipelineState::default()
+                };
+                let s = draw(fb, &shader, &state, &item.vertices, indices);
+                add_stats(&mut total, &s);
+            }
         }
     };
     let limits = Limits::default();
@@ -494,7 +680,10 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
         camera,
         stats: RenderStats {
             primitives: items.len(),
-            triangles: items.iter().map(|i| i.indices.len() / 3).sum(),
+            triangles: items
+                .iter()
+                .map(|i| (i.indices.len() + i.phong_indices.len()) / 3)
+                .sum(),
             draw: total,
             passes,
             samples_per_pixel,
@@ -502,6 +691,8 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
             textures: textures.list.len(),
             mip_chains: textures.mip_chains,
             mips_skipped: textures.mips_skipped,
+            hybrid_phong_triangles: hybrid_phong,
+            hybrid_gouraud_triangles: hybrid_gouraud,
             prepare_seconds,
             draw_seconds,
         },

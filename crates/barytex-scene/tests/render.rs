@@ -221,14 +221,7 @@ fn bad_options_are_errors() {
     ));
 }
 
-/// The demo's options (what `barytex` renders), at a small size.
-fn demo_options(width: u32, height: u32) -> RenderOptions {
-    RenderOptions {
-        filter: Filter::Anisotropic(8),
-        anti_aliasing: AntiAliasing::Msaa(4),
-        ..small(width, height)
-    }
-}
+use barytex_scene::demo::demo_options;
 
 #[test]
 fn the_demo_is_the_same_for_any_thread_count() {
@@ -393,4 +386,91 @@ fn texture_encoding_test_columns_match() {
             );
         }
     }
+}
+
+/// Mean |a − b| over all channels of two sRGB images.
+fn mean_difference(a: &[[u8; 4]], b: &[[u8; 4]]) -> f64 {
+    let sum: u64 = a
+        .iter()
+        .zip(b)
+        .flat_map(|(p, q)| p.iter().zip(q).map(|(x, y)| u64::from(x.abs_diff(*y))))
+        .sum();
+    sum as f64 / (a.len() * 4) as f64
+}
+
+/// The shading frequencies on the demo: against per-pixel Phong, flat is further than Gouraud,
+/// and the hybrid (Phong only where the H-test finds a highlight) is closer than Gouraud while
+/// shading only a minority of triangles with Phong.
+#[test]
+fn shading_frequencies_order_by_error_on_the_demo() {
+    let scene = barytex_scene::demo::demo_scene();
+    let shade = |shading: Shading| {
+        let options = RenderOptions {
+            shading,
+            ..small(320, 180)
+        };
+        let out = render(&scene, &options).expect("renders");
+        let pixels: Vec<[u8; 4]> = out
+            .image
+            .to_srgba8()
+            .expect("small")
+            .texels()
+            .iter()
+            .map(|t| t.0)
+            .collect();
+        (pixels, out.stats)
+    };
+    let (phong, _) = shade(Shading::Phong);
+    let (flat, _) = shade(Shading::Flat);
+    let (gouraud, _) = shade(Shading::Gouraud);
+    let (hybrid, stats) = shade(Shading::Hybrid);
+    let (e_flat, e_gouraud, e_hybrid) = (
+        mean_difference(&flat, &phong),
+        mean_difference(&gouraud, &phong),
+        mean_difference(&hybrid, &phong),
+    );
+    println!(
+        "mean |Δ| against Phong (sRGB steps): flat {e_flat:.3}, Gouraud {e_gouraud:.3}, hybrid \
+         {e_hybrid:.3}; hybrid Phong triangles {} of {}",
+        stats.hybrid_phong_triangles,
+        stats.hybrid_phong_triangles + stats.hybrid_gouraud_triangles
+    );
+    assert!(
+        e_flat > e_gouraud && e_gouraud > e_hybrid,
+        "{e_flat} {e_gouraud} {e_hybrid}"
+    );
+    assert!(stats.hybrid_phong_triangles > 0);
+    assert!(stats.hybrid_phong_triangles * 4 < stats.hybrid_gouraud_triangles);
+}
+
+/// Fog pulls the far floor towards the background colour, more than the near floor.
+#[test]
+fn fog_fades_the_distance_into_the_background() {
+    let scene = barytex_scene::demo::demo_scene();
+    let fogged_options = demo_options(320, 180);
+    let clear_options = RenderOptions {
+        fog: None,
+        ..fogged_options
+    };
+    let (clear, fogged) = (srgb(&clear_options, &scene), srgb(&fogged_options, &scene));
+    let background = clear[0];
+    let row_distance = |pixels: &[[u8; 4]], y: u32| {
+        (0..320)
+            .map(|x| {
+                let p = at(pixels, 320, x, y);
+                p.iter()
+                    .zip(&background)
+                    .map(|(a, b)| f64::from(a.abs_diff(*b)))
+                    .sum::<f64>()
+            })
+            .sum::<f64>()
+            / 320.0
+    };
+    // How much of each row's contrast against the background survives the fog: less far away
+    // (just below the horizon) than near (the bottom of the image).
+    let kept = |y: u32| row_distance(&fogged, y) / row_distance(&clear, y);
+    let (far, near) = (kept(60), kept(175));
+    println!("contrast kept: far {far:.3}, near {near:.3}");
+    assert!(far < 0.7 && far < near - 0.08, "far {far}, near {near}");
+    assert!(near < 1.0, "fog everywhere in front of the eye: {near}");
 }

@@ -43,9 +43,13 @@ struct RenderArgs {
     /// camera, else auto.
     #[arg(long, value_parser = render_cmd::parse_camera)]
     camera: Option<barytex_scene::render::CameraChoice>,
-    /// unlit (glTF's unlit model: base colour × texture × vertex colour) or phong.
+    /// unlit (glTF's unlit model: base colour × texture × vertex colour), flat, gouraud,
+    /// phong, or hybrid (Gouraud, and Phong on triangles the highlight test picks).
     #[arg(long, default_value = "phong", value_parser = render_cmd::parse_shading)]
     shading: barytex_scene::render::Shading,
+    /// Exponential fog density per unit of distance, in the background colour.
+    #[arg(long, value_parser = render_cmd::parse_fog)]
+    fog: Option<f32>,
     /// file (the glTF samplers), nearest, bilinear, trilinear, aniso:N or ewa.
     #[arg(long, value_parser = render_cmd::parse_filter)]
     filter: Option<barytex_scene::render::Filter>,
@@ -98,6 +102,7 @@ impl RenderArgs {
             shading: barytex_scene::render::Shading::Phong,
             filter: Some(barytex_scene::render::Filter::Anisotropic(8)),
             aa: Some(barytex_scene::render::AntiAliasing::Msaa(4)),
+            fog: Some(barytex_scene::demo::DEMO_FOG),
             threads: None,
             print_camera: false,
             stats: false,
@@ -110,6 +115,7 @@ impl RenderArgs {
         scene: Option<usize>,
         out: PathBuf,
     ) -> render_cmd::Options {
+        let background = barytex_scene::render::RenderOptions::default().background;
         render_cmd::Options {
             file,
             scene,
@@ -120,7 +126,15 @@ impl RenderArgs {
                 shading: self.shading,
                 filter: self.filter.unwrap_or_default(),
                 anti_aliasing: self.aa.unwrap_or_default(),
-                ..barytex_scene::render::RenderOptions::default()
+                fog: self
+                    .fog
+                    .filter(|&d| d > 0.0)
+                    .map(|density| barytex_shade::ExponentialFog {
+                        density,
+                        colour: background.truncate(),
+                        distance: barytex_shade::FogDistance::Euclidean,
+                    }),
+                background,
             },
             threads: self.threads,
             out,
@@ -191,6 +205,7 @@ fn main() -> ExitCode {
             let render = RenderArgs {
                 filter: args.render.filter.or(defaults.filter),
                 aa: args.render.aa.or(defaults.aa),
+                fog: args.render.fog.or(defaults.fog),
                 ..args.render
             };
             render_cmd::run(&render.options(None, None, args.out))

@@ -118,13 +118,26 @@ pub(crate) fn parse_aa(text: &str) -> Result<AntiAliasing, String> {
     })
 }
 
-/// `unlit|phong`.
+/// `unlit|flat|gouraud|phong|hybrid`.
 pub(crate) fn parse_shading(text: &str) -> Result<Shading, String> {
     match text {
         "unlit" => Ok(Shading::Unlit),
+        "flat" => Ok(Shading::Flat),
+        "gouraud" => Ok(Shading::Gouraud),
         "phong" => Ok(Shading::Phong),
-        _ => Err(format!("shading `{text}`: expected unlit or phong")),
+        "hybrid" => Ok(Shading::Hybrid),
+        _ => Err(format!(
+            "shading `{text}`: expected unlit, flat, gouraud, phong or hybrid"
+        )),
     }
+}
+
+/// A fog density ≥ 0 per unit of distance.
+pub(crate) fn parse_fog(text: &str) -> Result<f32, String> {
+    text.parse::<f32>()
+        .ok()
+        .filter(|d| d.is_finite() && *d >= 0.0)
+        .ok_or_else(|| format!("fog `{text}`: expected a density ≥ 0 (per unit of distance)"))
 }
 
 fn load(options: &Options) -> Result<(Scene, f64), Box<dyn std::error::Error>> {
@@ -174,6 +187,12 @@ fn print_stats(rendered: &Rendered, scene: &Scene) {
         d.degenerate,
         d.dropped_non_finite
     );
+    if s.hybrid_phong_triangles + s.hybrid_gouraud_triangles > 0 {
+        println!(
+            "hybrid shading: the highlight test sent {} triangles to Phong, {} to Gouraud",
+            s.hybrid_phong_triangles, s.hybrid_gouraud_triangles
+        );
+    }
     if let Some(a) = &s.adaptive {
         println!(
             "adaptive: {} samples in {} passes; pixels at the maximum: {}",

@@ -2,6 +2,8 @@
 //! vertex colour), alpha modes, emission, occlusion, and per-pixel Blinn–Phong under the
 //! scene's punctual lights — or glTF's unlit model.
 
+use std::borrow::Cow;
+
 use barytex_raster::{Fragment, Shader};
 use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
 
@@ -26,9 +28,12 @@ pub(crate) struct WorldLight {
 pub(crate) struct WorldPrimitive<'a> {
     pub(crate) positions: Vec<Vec3>,
     pub(crate) normals: Option<Vec<Vec3>>,
-    pub(crate) uv0: Option<&'a [Vec2]>,
-    pub(crate) uv1: Option<&'a [Vec2]>,
-    pub(crate) colors: Option<&'a [Vec4]>,
+    pub(crate) uv0: Option<Cow<'a, [Vec2]>>,
+    pub(crate) uv1: Option<Cow<'a, [Vec2]>>,
+    pub(crate) colors: Option<Cow<'a, [Vec4]>>,
+    /// Flat shading: the (diffuse, specular) light each vertex carries, evaluated once per
+    /// triangle (the vertices are unwelded, three per triangle).
+    pub(crate) lighting: Option<Vec<(Vec3, Vec3)>>,
 }
 
 /// The material as the shader reads it.
@@ -48,8 +53,23 @@ pub(crate) struct ShaderMaterial {
     pub(crate) lit: bool,
 }
 
+/// Where lighting is evaluated (seed 001/004's shading frequencies).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Frequency {
+    /// Once per polygon: the light each (unwelded) vertex carries, evaluated at the
+    /// triangle's centroid with its face normal, constant across the triangle.
+    Flat,
+    /// At the vertices, interpolated (the texture still modulates per pixel).
+    Gouraud,
+    /// Per pixel with the interpolated, renormalized normal.
+    Phong,
+}
+
 /// Draws one primitive.
 pub(crate) struct MaterialShader<'a> {
+    pub(crate) frequency: Frequency,
+    /// Exponential fog over the final colour, with the camera's forward direction.
+    pub(crate) fog: Option<(barytex_shade::ExponentialFog, Vec3)>,
     pub(crate) view_projection: Mat4,
     pub(crate) eye: Vec3,
     pub(crate) primitive: &'a WorldPrimitive<'a>,
@@ -75,6 +95,78 @@ fn cone_attenuation(cos_angle: f32, inner: f32, outer: f32) -> f32 {
     let scale = 1.0 / (cos_inner - cos_outer).max(1e-3);
     let t = ((cos_angle - cos_outer) * scale).clamp(0.0, 1.0);
     t * t
+}
+
+impl MaterialShader<'_> {
+    fn light_terms(&self, n: Vec3, view: Vec3, position: Vec3, shininess: f32) -> (Vec3, Vec3) {
+        light_terms(self.lights, n, view, position, shininess)
+    }
+
+    /// Blinn–Phong exponent from glTF's roughness.
+    fn shininess(roughness: f32) -> f32 {
+        shininess(roughness)
+    }
+
+    fn fogged(&self, colour: Vec3, position: Vec3) -> Vec3 {
+        match self.fog {
+            Some((fog, forward)) => fog.apply(colour, self.eye, forward, position),
+            None => colour,
+        }
+    }
+}
+
+/// The lights' diffuse (already divided by π) and specular (normalized Blinn–Phong lobe)
+/// contributions at `position` with unit normal `n`, before the material's colours.
+pub(crate) fn light_terms(
+    lights: &[WorldLight],
+    n: Vec3,
+    view: Vec3,
+    position: Vec3,
+    shininess: f32,
+) -> (Vec3, Vec3) {
+    {
+        let (mut diffuse, mut specular) = (Vec3::ZERO, Vec3::ZERO);
+        for light in lights {
+            let (l, attenuation) = match light.kind {
+                LightKind::Directional => (-light.direction, 1.0),
+                LightKind::Point | LightKind::Spot { .. } => {
+                    let to_light = light.position - position;
+                    let d = to_light.length();
+                    let l = to_light / d.max(1e-12);
+                    let mut a = distance_attenuation(d, light.range);
+                    if let LightKind::Spot {
+                        inner_cone_angle,
+                        outer_cone_angle,
+                    } = light.kind
+                    {
+                        a *= cone_attenuation(
+                            light.direction.dot(-l),
+                            inner_cone_angle,
+                            outer_cone_angle,
+                        );
+                    }
+                    (l, a)
+                }
+            };
+            let n_dot_l = n.dot(l);
+            if n_dot_l <= 0.0 || attenuation <= 0.0 {
+                continue;
+            }
+            let irradiance = light.radiance * (n_dot_l * attenuation);
+            let h = (l + view).normalize_or_zero();
+            let lobe = (shininess + 8.0) / (8.0 * std::f32::consts::PI)
+                * n.dot(h).max(0.0).powf(shininess);
+            diffuse += irradiance / std::f32::consts::PI;
+            specular += irradiance * lobe;
+        }
+        (diffuse, specular)
+    }
+}
+
+/// Blinn–Phong exponent from glTF's roughness (α = roughness², n = 2/α² − 2).
+pub(crate) fn shininess(roughness: f32) -> f32 {
+    let alpha_r = (roughness * roughness).clamp(0.02, 1.0);
+    (2.0 / (alpha_r * alpha_r) - 2.0).max(1.0)
 }
 
 impl MaterialShader<'_> {
@@ -118,14 +210,37 @@ impl Shader for MaterialShader<'_> {
                 .and_then(|n| n.get(i))
                 .copied()
                 .unwrap_or_default(),
-            uv0: p.uv0.and_then(|n| n.get(i)).copied().unwrap_or_default(),
-            uv1: p.uv1.and_then(|n| n.get(i)).copied().unwrap_or_default(),
+            uv0: p
+                .uv0
+                .as_ref()
+                .and_then(|n| n.get(i))
+                .copied()
+                .unwrap_or_default(),
+            uv1: p
+                .uv1
+                .as_ref()
+                .and_then(|n| n.get(i))
+                .copied()
+                .unwrap_or_default(),
             color: p
                 .colors
+                .as_ref()
                 .and_then(|n| n.get(i))
                 .copied()
                 .unwrap_or(Vec4::ONE),
+            ..Surface::default()
         };
+        let mut surface = surface;
+        if let Some(&(d, sp)) = p.lighting.as_ref().and_then(|l| l.get(i)) {
+            (surface.diffuse, surface.specular) = (d, sp);
+        } else if self.frequency == Frequency::Gouraud && self.material.lit && p.normals.is_some() {
+            let n = surface.normal.normalize_or_zero();
+            let view = (self.eye - position).normalize_or_zero();
+            // Facing the eye, as the per-pixel path flips it for double-sided back faces.
+            let n = if n.dot(view) < 0.0 { -n } else { n };
+            let shininess = Self::shininess(self.material.roughness);
+            (surface.diffuse, surface.specular) = self.light_terms(n, view, position, shininess);
+        }
         (self.view_projection * position.extend(1.0), surface)
     }
 
@@ -136,7 +251,7 @@ impl Shader for MaterialShader<'_> {
             || m.emissive_texture.is_some()
             || m.occlusion_texture.is_some()
             || m.metallic_roughness_texture.is_some()
-            || (m.lit && self.primitive.normals.is_none());
+            || (m.lit && (self.primitive.normals.is_none() || self.frequency == Frequency::Flat));
         let (ddx, ddy) = if needs_derivatives {
             (f.ddx(), f.ddy())
         } else {
@@ -157,18 +272,9 @@ impl Shader for MaterialShader<'_> {
             AlphaMode::Blend => base.w,
         };
         if !m.lit {
-            return Some(base.truncate().extend(alpha));
+            return Some(self.fogged(base.truncate(), s.position).extend(alpha));
         }
         let view = (self.eye - s.position).normalize_or_zero();
-        // The interpolated normal, or the face normal from the position's derivatives.
-        let mut n = if self.primitive.normals.is_some() {
-            s.normal.normalize_or_zero()
-        } else {
-            ddx.position.cross(ddy.position).normalize_or_zero()
-        };
-        if n.dot(view) < 0.0 && (!f.front_facing || self.primitive.normals.is_none()) {
-            n = -n;
-        }
         let (mut metallic, mut roughness) = (m.metallic, m.roughness);
         if let Some(t) = self.sample(m.metallic_roughness_texture, &s, &ddx, &ddy) {
             roughness *= t.y;
@@ -176,41 +282,29 @@ impl Shader for MaterialShader<'_> {
         }
         let albedo = base.truncate() * (1.0 - metallic);
         let specular_color = Vec3::splat(0.04).lerp(base.truncate(), metallic);
-        let alpha_r = (roughness * roughness).clamp(0.02, 1.0);
-        let shininess = (2.0 / (alpha_r * alpha_r) - 2.0).max(1.0);
-        let mut color = Vec3::ZERO;
-        for light in self.lights {
-            let (l, attenuation) = match light.kind {
-                LightKind::Directional => (-light.direction, 1.0),
-                LightKind::Point | LightKind::Spot { .. } => {
-                    let to_light = light.position - s.position;
-                    let d = to_light.length();
-                    let l = to_light / d.max(1e-12);
-                    let mut a = distance_attenuation(d, light.range);
-                    if let LightKind::Spot {
-                        inner_cone_angle,
-                        outer_cone_angle,
-                    } = light.kind
-                    {
-                        a *= cone_attenuation(
-                            light.direction.dot(-l),
-                            inner_cone_angle,
-                            outer_cone_angle,
-                        );
-                    }
-                    (l, a)
-                }
+        let has_normals = self.primitive.normals.is_some();
+        let per_vertex = match self.frequency {
+            Frequency::Gouraud => has_normals,
+            Frequency::Flat => self.primitive.lighting.is_some(),
+            Frequency::Phong => false,
+        };
+        let (diffuse, specular) = if per_vertex {
+            (s.diffuse, s.specular)
+        } else {
+            // The interpolated normal, or the face normal from the position's derivatives.
+            let mut n = if has_normals && self.frequency == Frequency::Phong {
+                s.normal.normalize_or_zero()
+            } else {
+                ddx.position.cross(ddy.position).normalize_or_zero()
             };
-            let n_dot_l = n.dot(l);
-            if n_dot_l <= 0.0 || attenuation <= 0.0 {
-                continue;
+            if n.dot(view) < 0.0
+                && (!f.front_facing || !has_normals || self.frequency == Frequency::Flat)
+            {
+                n = -n;
             }
-            let h = (l + view).normalize_or_zero();
-            let spec = (shininess + 8.0) / (8.0 * std::f32::consts::PI)
-                * n.dot(h).max(0.0).powf(shininess);
-            let brdf = albedo / std::f32::consts::PI + specular_color * spec;
-            color += brdf * light.radiance * (n_dot_l * attenuation);
-        }
+            self.light_terms(n, view, s.position, Self::shininess(roughness))
+        };
+        let color = albedo * diffuse + specular_color * specular;
         let mut ambient = self.ambient * base.truncate();
         if let Some(o) = self.sample(m.occlusion_texture, &s, &ddx, &ddy) {
             ambient *= 1.0 + m.occlusion_strength * (o.x - 1.0);
@@ -219,6 +313,9 @@ impl Shader for MaterialShader<'_> {
         if let Some(e) = self.sample(m.emissive_texture, &s, &ddx, &ddy) {
             emissive *= e.truncate();
         }
-        Some((color + ambient + emissive).extend(alpha))
+        Some(
+            self.fogged(color + ambient + emissive, s.position)
+                .extend(alpha),
+        )
     }
 }

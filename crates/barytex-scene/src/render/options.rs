@@ -24,10 +24,19 @@ pub enum Shading {
     /// glTF's unlit model for every material: base colour factor × base colour texture ×
     /// vertex colour. Comparable with any renderer, no lighting differences.
     Unlit,
-    /// Per-pixel Blinn–Phong with the scene's punctual lights (a headlight when it has none);
-    /// materials marked `KHR_materials_unlit` stay unlit.
+    /// Lighting once per polygon's plane: the face normal at every pixel (facets visible).
+    Flat,
+    /// Lighting at the vertices, interpolated across the triangle (the texture still
+    /// modulates per pixel); highlights inside a triangle are lost.
+    Gouraud,
+    /// Per-pixel Blinn–Phong with the scene's punctual lights (a headlight when it has none)
+    /// and the interpolated, renormalized normal. Materials marked `KHR_materials_unlit` stay
+    /// unlit under every lit mode.
     #[default]
     Phong,
+    /// Gouraud, except on triangles where the seed's highlight test (H-test,
+    /// `barytex_shade::HighlightTest`) finds a visible specular highlight: those get Phong.
+    Hybrid,
 }
 
 /// The texture filter, overriding the files' samplers (their wrap modes stay).
@@ -118,11 +127,14 @@ pub struct RenderOptions {
     pub anti_aliasing: AntiAliasing,
     /// Background colour (linear, straight alpha).
     pub background: Vec4,
+    /// Exponential fog (Euclidean distance from the eye) over lit and unlit surfaces; `None`:
+    /// clear air.
+    pub fog: Option<barytex_shade::ExponentialFog>,
 }
 
 impl Default for RenderOptions {
     /// 800 × 600, the first camera, Blinn–Phong, the files' filters, no anti-aliasing, a
-    /// mid-grey background.
+    /// mid-grey background, no fog.
     fn default() -> Self {
         Self {
             width: 800,
@@ -132,6 +144,7 @@ impl Default for RenderOptions {
             filter: Filter::FromFile,
             anti_aliasing: AntiAliasing::None,
             background: Vec4::new(0.18, 0.18, 0.2, 1.0),
+            fog: None,
         }
     }
 }

@@ -12,6 +12,9 @@ pub(crate) struct Surface {
     pub(crate) uv0: Vec2,
     pub(crate) uv1: Vec2,
     pub(crate) color: Vec4,
+    /// Gouraud shading's per-vertex diffuse and specular light (zero otherwise).
+    pub(crate) diffuse: Vec3,
+    pub(crate) specular: Vec3,
 }
 
 impl Interpolate for Surface {
@@ -23,6 +26,8 @@ impl Interpolate for Surface {
             uv0: self.uv0 * w,
             uv1: self.uv1 * w,
             color: self.color * w,
+            diffuse: self.diffuse * w,
+            specular: self.specular * w,
         }
     }
 
@@ -34,6 +39,8 @@ impl Interpolate for Surface {
             uv0: self.uv0 + o.uv0,
             uv1: self.uv1 + o.uv1,
             color: self.color + o.color,
+            diffuse: self.diffuse + o.diffuse,
+            specular: self.specular + o.specular,
         }
     }
 
@@ -45,6 +52,8 @@ impl Interpolate for Surface {
             uv0: Interpolate::lerp(self.uv0, o.uv0, t),
             uv1: Interpolate::lerp(self.uv1, o.uv1, t),
             color: Interpolate::lerp(self.color, o.color, t),
+            diffuse: Interpolate::lerp(self.diffuse, o.diffuse, t),
+            specular: Interpolate::lerp(self.specular, o.specular, t),
         }
     }
 }
