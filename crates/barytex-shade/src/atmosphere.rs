@@ -108,7 +108,7 @@ impl ExponentialFog {
     ///
     /// # Accuracy
     /// As `f32::exp`: within 2 ulps of `e^(−d_f z_p)` for the rounded product
-    /// (`atmosphere.rs::exponential_fog_matches_f64`).
+    /// (`tests/lighting.rs::exponential_fog_matches_f64`).
     ///
     /// ```
     /// use barytex_shade::{ExponentialFog, FogDistance};
@@ -170,7 +170,7 @@ impl HeightFog {
     ///
     /// # Accuracy
     /// Relative error below 1e-6 against 4096-step Simpson integration in f64
-    /// (`atmosphere.rs::height_fog_matches_quadrature`).
+    /// (`tests/lighting.rs::height_fog_matches_quadrature`).
     ///
     /// # Special values
     /// Never negative; NaN input gives `f32::INFINITY` (the point is hidden).

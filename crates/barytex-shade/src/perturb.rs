@@ -69,7 +69,7 @@ pub fn perturb_normal(n: Vec3, tangent: Vec4, m: Vec3) -> Vec3 {
 ///
 /// # Accuracy
 /// On a plane the result is the exact normal of the displaced plane `h(x, y)`,
-/// `(−h_x, −h_y, 1)/|…|`, within 4e-7 (`texturing.rs::bump_on_a_plane_is_exact`).
+/// `(−h_x, −h_y, 1)/|…|`, within 4e-7 (`tests/texturing.rs::bump_on_a_plane_is_exact`).
 ///
 /// ```
 /// use barytex_shade::bump_normal;
