@@ -3,8 +3,9 @@
 //! It shows the seeds at a glance: a checkerboard floor receding to the horizon (where aliasing,
 //! mipmaps and anisotropic filtering differ most), a sphere with the equirectangular mapping, a
 //! capped cylinder with the cylindrical mapping, a torus with its (u, v) parametrisation, each
-//! with a texture that makes the mapping's distortion and seams visible; a sun, a point light
-//! and a spot light.
+//! with a texture that makes the mapping's distortion and seams visible, the torus also
+//! bump-mapped through a normal texture (tangents generated with MikkTSpace); a sun, a point
+//! light and a spot light.
 
 use std::sync::Arc;
 
@@ -70,6 +71,33 @@ fn stripes(side: u32) -> SceneImage {
             [120, 40, 30]
         }
     })
+}
+
+/// A tangent-space normal map (linear RGB, glTF's convention) of the bumps
+/// `h(u, v) = sin(2π·16u)·sin(2π·8v)`: the torus gets bumps its silhouette does not show
+/// (seed 002's bump mapping, through glTF's normal texture).
+fn bumps(side: u32) -> SceneImage {
+    let texture = Texture2d::from_fn(side, side, |x, y| {
+        let (u, v) = (
+            (x as f32 + 0.5) / side as f32,
+            (y as f32 + 0.5) / side as f32,
+        );
+        let tau = std::f32::consts::TAU;
+        let (fu, fv) = (16.0, 8.0);
+        // ∂h/∂u and ∂h/∂v, scaled so the slopes stay moderate.
+        let k = 0.02;
+        let du = k * tau * fu * (tau * fu * u).cos() * (tau * fv * v).sin();
+        let dv = k * tau * fv * (tau * fu * u).sin() * (tau * fv * v).cos();
+        let n = Vec3::new(-du, -dv, 1.0).normalize();
+        let byte = |c: f32| ((c * 0.5 + 0.5) * 255.0).round() as u8;
+        barytex_texture::Rgba8([byte(n.x), byte(n.y), byte(n.z), 255])
+    })
+    .ok();
+    SceneImage {
+        name: Some("bumps".to_owned()),
+        srgb: None,
+        linear: texture.map(|t| Arc::new(AnyTexture2d::Rgba8(t))),
+    }
 }
 
 fn repeat_trilinear() -> Sampler {
@@ -187,6 +215,7 @@ pub fn demo_scene() -> Scene {
         globe(512),
         stripes(256),
         checker(256, 32, [240, 200, 60], [40, 60, 150]),
+        bumps(256),
     ];
     let textures = (0..images.len())
         .map(|i| Texture {
@@ -198,7 +227,16 @@ pub fn demo_scene() -> Scene {
         textured("floor", 0, 0.6),
         textured("globe", 1, 0.3),
         textured("stripes", 2, 0.4),
-        textured("checker", 3, 0.35),
+        Material {
+            normal_texture: Some(TextureRef {
+                texture: 4,
+                image: Some(4),
+                sampler: repeat_trilinear(),
+                tex_coord: 0,
+                transform: Mat3::IDENTITY,
+            }),
+            ..textured("bumpy checker", 3, 0.35)
+        },
     ];
     let empty = barytex_uv::mesh::Mesh {
         positions: Vec::new(),
@@ -304,7 +342,7 @@ pub fn demo_scene() -> Scene {
             primitives_loaded: 4,
             triangles,
             instanced_triangles: triangles,
-            images_decoded: 4,
+            images_decoded: 5,
             ..crate::scene::SceneStats::default()
         },
     }

@@ -115,6 +115,8 @@ pub struct RenderStats {
     pub mip_chains: usize,
     /// Textures whose filter uses mipmaps but which are never minified (no chain built).
     pub mips_skipped: usize,
+    /// Primitives whose tangents were generated (MikkTSpace) for a normal map.
+    pub tangents_generated: usize,
     /// Hybrid shading: triangles the highlight test sent to Phong shading, and the rest
     /// (Gouraud).
     pub hybrid_phong_triangles: usize,
@@ -201,6 +203,45 @@ fn uv_per_pixel(
     out
 }
 
+/// World-space tangents of a normal-mapped primitive: the file's, else MikkTSpace's (generated
+/// from the positions, normals and the normal map's texture coordinates), the bitangent sign
+/// flipped under a mirroring world matrix. The flag says whether they were generated.
+fn world_tangents(
+    instance: &crate::scene::MeshInstance,
+    primitive: &crate::mesh::Primitive,
+    tex_coord: u32,
+) -> (Option<Vec<Vec4>>, bool) {
+    let mut generated = false;
+    let object = primitive.tangents.clone().or_else(|| {
+        let uvs = if tex_coord == 1 {
+            primitive.tex_coords1.as_ref()
+        } else {
+            primitive.tex_coords0.as_ref()
+        }?;
+        let mesh = barytex_uv::mesh::Mesh {
+            positions: primitive.positions.clone(),
+            normals: primitive.normals.clone()?,
+            tangents: Vec::new(),
+            uvs: uvs.clone(),
+            indices: primitive.triangles.clone(),
+        };
+        generated = true;
+        barytex_shade::generate_tangents(&mesh)
+    });
+    let linear = Mat3::from_mat4(instance.world);
+    let sign = if instance.flips_winding { -1.0 } else { 1.0 };
+    let world = object.map(|t| {
+        t.iter()
+            .map(|v| {
+                (linear * v.truncate())
+                    .normalize_or_zero()
+                    .extend(v.w * sign)
+            })
+            .collect()
+    });
+    (world, generated && primitive.tangents.is_none())
+}
+
 /// Flat shading, one evaluation per polygon: unwelds the primitive (three vertices per
 /// triangle) and gives each triangle's vertices the light at its centroid under its face
 /// normal (turned towards the eye), so the shader interpolates a constant.
@@ -253,6 +294,7 @@ fn flatten(item: &mut DrawItem<'_>, lights: &[WorldLight], eye: Vec3) {
         uv1,
         colors,
         lighting: Some(lighting),
+        tangents: None,
     };
     item.indices = (0..count).collect();
     item.vertices = (0..count).collect();
@@ -384,6 +426,7 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
                     uv1: uv1.map(std::borrow::Cow::Borrowed),
                     colors: primitive.colors0.as_deref().map(std::borrow::Cow::Borrowed),
                     lighting: None,
+                    tangents: None,
                 },
                 material: ShaderMaterial {
                     base_color: material.base_color_factor,
@@ -393,6 +436,8 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
                     occlusion_texture: None,
                     occlusion_strength: material.occlusion_strength,
                     metallic_roughness_texture: None,
+                    normal_texture: None,
+                    normal_scale: material.normal_scale,
                     metallic: material.metallic_factor.clamp(0.0, 1.0),
                     roughness: material.roughness_factor.clamp(0.0, 1.0),
                     alpha_mode: material.alpha_mode,
@@ -458,13 +503,33 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
         } else {
             (None, None, None)
         };
-        slots.push((base, emissive, occlusion, metallic_roughness));
+        // Normal maps only under per-pixel shading, where they can show.
+        let per_pixel = matches!(options.shading, Shading::Phong | Shading::Hybrid);
+        let normal = if lit && !m.unlit && per_pixel {
+            slot(&m.normal_texture, ColorSpace::Linear)?
+        } else {
+            None
+        };
+        slots.push((base, emissive, occlusion, metallic_roughness, normal));
     }
-    for (item, (base, emissive, occlusion, metallic_roughness)) in items.iter_mut().zip(slots) {
+    let mut tangents_generated = 0;
+    let primitives = scene
+        .instances
+        .iter()
+        .flat_map(|i| i.mesh.primitives.iter().map(move |p| (i, p)));
+    for ((item, (base, emissive, occlusion, metallic_roughness, normal)), (instance, primitive)) in
+        items.iter_mut().zip(slots).zip(primitives)
+    {
         item.material.base_texture = base;
         item.material.emissive_texture = emissive;
         item.material.occlusion_texture = occlusion;
         item.material.metallic_roughness_texture = metallic_roughness;
+        item.material.normal_texture = normal;
+        if let Some(slot) = normal {
+            let (tangents, generated) = world_tangents(instance, primitive, slot.tex_coord);
+            tangents_generated += usize::from(generated);
+            item.primitive.tangents = tangents;
+        }
     }
     // Opaque and masked first, in scene order; blended after, back to front.
     let (mut order, mut blended): (Vec<usize>, Vec<usize>) =
@@ -691,6 +756,7 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
             textures: textures.list.len(),
             mip_chains: textures.mip_chains,
             mips_skipped: textures.mips_skipped,
+            tangents_generated,
             hybrid_phong_triangles: hybrid_phong,
             hybrid_gouraud_triangles: hybrid_gouraud,
             prepare_seconds,

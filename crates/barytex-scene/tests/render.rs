@@ -474,3 +474,40 @@ fn fog_fades_the_distance_into_the_background() {
     assert!(far < 0.7 && far < near - 0.08, "far {far}, near {near}");
     assert!(near < 1.0, "fog everywhere in front of the eye: {near}");
 }
+
+/// Normal mapping: the demo torus's bump texture changes its shading; a flat normal map
+/// ((0.5, 0.5, 1) everywhere) leaves it within one sRGB step of no map at all; and Gouraud
+/// shading ignores normal maps (they need per-pixel normals).
+#[test]
+fn normal_maps_perturb_only_per_pixel_shading() {
+    use std::sync::Arc;
+    let bumpy = barytex_scene::demo::demo_scene();
+    let mut plain = bumpy.clone();
+    plain.materials[3].normal_texture = None;
+    let mut flat_map = bumpy.clone();
+    // Exactly (0.5, 0.5, 1): 8-bit 128 would decode to a tilt of 1/255.
+    let flat = barytex_texture::Texture2d::from_fn(4, 4, |_, _| {
+        barytex_texture::Rgba32f([0.5, 0.5, 1.0, 1.0])
+    })
+    .expect("small");
+    flat_map.images[4].linear = Some(Arc::new(barytex_texture::load::AnyTexture2d::Rgba32f(flat)));
+    let options = small(320, 180);
+    let (b, p, f) = (
+        srgb(&options, &bumpy),
+        srgb(&options, &plain),
+        srgb(&options, &flat_map),
+    );
+    assert!(mean_difference(&b, &p) > 0.5, "{}", mean_difference(&b, &p));
+    let worst = f
+        .iter()
+        .zip(&p)
+        .flat_map(|(x, y)| x.iter().zip(y).map(|(a, b)| a.abs_diff(*b)))
+        .max()
+        .unwrap_or(0);
+    assert!(worst <= 1, "a flat normal map changed a pixel by {worst}");
+    let gouraud = RenderOptions {
+        shading: Shading::Gouraud,
+        ..options
+    };
+    assert_eq!(srgb(&gouraud, &bumpy), srgb(&gouraud, &plain));
+}

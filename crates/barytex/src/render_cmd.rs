@@ -170,8 +170,9 @@ fn print_stats(rendered: &Rendered, scene: &Scene) {
         scene.stats.primitives_skipped_non_triangle
     );
     println!(
-        "textures: {} prepared, {} mip chains built, {} not built (never minified)",
-        s.textures, s.mip_chains, s.mips_skipped
+        "textures: {} prepared, {} mip chains built, {} not built (never minified); tangents \
+         generated for {} normal-mapped primitives",
+        s.textures, s.mip_chains, s.mips_skipped, s.tangents_generated
     );
     println!(
         "draw: {} passes, {:.2} samples/pixel, {} fragments shaded, {} discarded, {} failed depth; \

@@ -31,6 +31,8 @@ pub(crate) struct WorldPrimitive<'a> {
     pub(crate) uv0: Option<Cow<'a, [Vec2]>>,
     pub(crate) uv1: Option<Cow<'a, [Vec2]>>,
     pub(crate) colors: Option<Cow<'a, [Vec4]>>,
+    /// World-space tangents (bitangent sign in `w`), for normal-mapped materials.
+    pub(crate) tangents: Option<Vec<Vec4>>,
     /// Flat shading: the (diffuse, specular) light each vertex carries, evaluated once per
     /// triangle (the vertices are unwelded, three per triangle).
     pub(crate) lighting: Option<Vec<(Vec3, Vec3)>>,
@@ -45,6 +47,9 @@ pub(crate) struct ShaderMaterial {
     pub(crate) emissive_texture: Option<Slot>,
     pub(crate) occlusion_texture: Option<Slot>,
     pub(crate) occlusion_strength: f32,
+    /// glTF's tangent-space normal map and its `scale` (per-pixel shading only).
+    pub(crate) normal_texture: Option<Slot>,
+    pub(crate) normal_scale: f32,
     /// glTF's metallic-roughness texture: roughness in G, metallic in B (times the factors).
     pub(crate) metallic_roughness_texture: Option<Slot>,
     pub(crate) metallic: f32,
@@ -228,6 +233,12 @@ impl Shader for MaterialShader<'_> {
                 .and_then(|n| n.get(i))
                 .copied()
                 .unwrap_or(Vec4::ONE),
+            tangent: p
+                .tangents
+                .as_ref()
+                .and_then(|t| t.get(i))
+                .copied()
+                .unwrap_or_default(),
             ..Surface::default()
         };
         let mut surface = surface;
@@ -251,6 +262,7 @@ impl Shader for MaterialShader<'_> {
             || m.emissive_texture.is_some()
             || m.occlusion_texture.is_some()
             || m.metallic_roughness_texture.is_some()
+            || m.normal_texture.is_some()
             || (m.lit && (self.primitive.normals.is_none() || self.frequency == Frequency::Flat));
         let (ddx, ddy) = if needs_derivatives {
             (f.ddx(), f.ddy())
@@ -301,6 +313,22 @@ impl Shader for MaterialShader<'_> {
                 && (!f.front_facing || !has_normals || self.frequency == Frequency::Flat)
             {
                 n = -n;
+            }
+            // Normal mapping: per pixel only (Gouraud and flat shading never see it).
+            if self.frequency == Frequency::Phong
+                && has_normals
+                && s.tangent.truncate().length_squared() > 0.0
+                && let Some(t) = self.sample(m.normal_texture, &s, &ddx, &ddy)
+            {
+                let mut tangent_space = barytex_shade::decode_normal(t.truncate());
+                tangent_space.x *= m.normal_scale;
+                tangent_space.y *= m.normal_scale;
+                let tangent = s
+                    .tangent
+                    .truncate()
+                    .normalize_or_zero()
+                    .extend(s.tangent.w.signum());
+                n = barytex_shade::perturb_normal(n, tangent, tangent_space);
             }
             self.light_terms(n, view, s.position, Self::shininess(roughness))
         };

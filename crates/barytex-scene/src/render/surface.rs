@@ -15,6 +15,8 @@ pub(crate) struct Surface {
     /// Gouraud shading's per-vertex diffuse and specular light (zero otherwise).
     pub(crate) diffuse: Vec3,
     pub(crate) specular: Vec3,
+    /// World-space tangent with the bitangent sign in `w` (normal-mapped materials only).
+    pub(crate) tangent: Vec4,
 }
 
 impl Interpolate for Surface {
@@ -28,6 +30,7 @@ impl Interpolate for Surface {
             color: self.color * w,
             diffuse: self.diffuse * w,
             specular: self.specular * w,
+            tangent: self.tangent * w,
         }
     }
 
@@ -41,6 +44,7 @@ impl Interpolate for Surface {
             color: self.color + o.color,
             diffuse: self.diffuse + o.diffuse,
             specular: self.specular + o.specular,
+            tangent: self.tangent + o.tangent,
         }
     }
 
@@ -54,6 +58,7 @@ impl Interpolate for Surface {
             color: Interpolate::lerp(self.color, o.color, t),
             diffuse: Interpolate::lerp(self.diffuse, o.diffuse, t),
             specular: Interpolate::lerp(self.specular, o.specular, t),
+            tangent: Interpolate::lerp(self.tangent, o.tangent, t),
         }
     }
 }
