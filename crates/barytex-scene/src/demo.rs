@@ -4,8 +4,8 @@
 //! mipmaps and anisotropic filtering differ most), a sphere with the equirectangular mapping, a
 //! capped cylinder with the cylindrical mapping, a torus with its (u, v) parametrisation, each
 //! with a texture that makes the mapping's distortion and seams visible, the torus also
-//! bump-mapped through a normal texture (tangents generated with MikkTSpace); a sun, a point
-//! light and a spot light.
+//! bump-mapped through a normal texture; a mirror sphere reflecting an equirectangular sky
+//! (environment mapping); a sun, a point light and a spot light.
 
 use std::sync::Arc;
 
@@ -98,6 +98,48 @@ fn bumps(side: u32) -> SceneImage {
         srgb: None,
         linear: texture.map(|t| Arc::new(AnyTexture2d::Rgba8(t))),
     }
+}
+
+/// The environment the mirror sphere reflects: an equirectangular sky in linear light — a
+/// blue gradient, a skyline of coloured blocks on the horizon, the sun where the demo's sun
+/// light comes from, and a brown ground with a grid below the horizon.
+fn sky() -> Option<Arc<AnyTexture2d>> {
+    let sun = Vec3::new(-6.0, 8.0, 6.0).normalize();
+    let (w, h) = (512, 256);
+    let texture = Texture2d::from_fn(w, h, |x, y| {
+        let uv = glam::Vec2::new((x as f32 + 0.5) / w as f32, (y as f32 + 0.5) / h as f32);
+        let d = barytex_uv::environment::equirect_direction(uv).unwrap_or(Vec3::Y);
+        // A skyline of coloured blocks around the horizon makes the reflection readable.
+        let azimuth = d.x.atan2(-d.z);
+        let block = ((azimuth + std::f32::consts::PI) * 24.0 / std::f32::consts::TAU) as u32;
+        let height = 0.06 + 0.05 * (block * 7 % 5) as f32;
+        let palette = [
+            Vec3::new(0.8, 0.15, 0.1),
+            Vec3::new(0.9, 0.9, 0.85),
+            Vec3::new(0.1, 0.5, 0.2),
+            Vec3::new(0.9, 0.6, 0.1),
+        ];
+        let c = if d.dot(sun) > 0.9994 {
+            Vec3::new(40.0, 38.0, 34.0)
+        } else if d.y >= 0.0 && d.y < height {
+            palette[(block % 4) as usize]
+        } else if d.y >= 0.0 {
+            let t = d.y.powf(0.4);
+            Vec3::new(0.55, 0.65, 0.85).lerp(Vec3::new(0.08, 0.2, 0.65), t)
+        } else {
+            // The ground plane y = −1 seen from the centre: a grid every unit.
+            let p = d * (-1.0 / d.y.min(-1e-3));
+            let line = (p.x - p.x.round()).abs() < 0.04 || (p.z - p.z.round()).abs() < 0.04;
+            if line && p.length() < 40.0 {
+                Vec3::new(0.55, 0.5, 0.42)
+            } else {
+                Vec3::new(0.22, 0.18, 0.14)
+            }
+        };
+        barytex_texture::Rgba32f([c.x, c.y, c.z, 1.0])
+    })
+    .ok()?;
+    Some(Arc::new(AnyTexture2d::Rgba32f(texture)))
 }
 
 fn repeat_trilinear() -> Sampler {
@@ -237,6 +279,13 @@ pub fn demo_scene() -> Scene {
             }),
             ..textured("bumpy checker", 3, 0.35)
         },
+        Material {
+            name: Some("mirror".to_owned()),
+            base_color_factor: glam::Vec4::new(0.95, 0.95, 0.95, 1.0),
+            metallic_factor: 1.0,
+            roughness_factor: 0.02,
+            ..Material::default()
+        },
     ];
     let empty = barytex_uv::mesh::Mesh {
         positions: Vec::new(),
@@ -249,6 +298,7 @@ pub fn demo_scene() -> Scene {
     let sphere = barytex_uv::mesh::sphere(64, 32).unwrap_or_else(|_| empty.clone());
     let cylinder = barytex_uv::mesh::cylinder(48, 4, true).unwrap_or_else(|_| empty.clone());
     let torus = barytex_uv::mesh::torus(72, 32, 1.0, 0.35).unwrap_or_else(|_| empty.clone());
+    let mirror = barytex_uv::mesh::sphere(48, 24).unwrap_or_else(|_| empty.clone());
     let instances = vec![
         // 80 × 80 units, the checker (16 squares a side) repeated 5 times: squares of 1 unit.
         instance(
@@ -281,6 +331,16 @@ pub fn demo_scene() -> Scene {
                 Vec3::splat(0.9),
                 Quat::from_rotation_x(1.1) * Quat::from_rotation_z(0.3),
                 Vec3::new(2.7, 1.1, 0.2),
+            ),
+        ),
+        instance(
+            4,
+            "mirror sphere",
+            primitive(mirror, 4, 1.0),
+            Mat4::from_scale_rotation_translation(
+                Vec3::splat(0.55),
+                Quat::IDENTITY,
+                Vec3::new(-0.9, 0.55, 2.0),
             ),
         ),
     ];
@@ -337,9 +397,10 @@ pub fn demo_scene() -> Scene {
         textures,
         images,
         warnings: Vec::new(),
+        environment: sky(),
         stats: crate::scene::SceneStats {
-            meshes_loaded: 4,
-            primitives_loaded: 4,
+            meshes_loaded: 5,
+            primitives_loaded: 5,
             triangles,
             instanced_triangles: triangles,
             images_decoded: 5,

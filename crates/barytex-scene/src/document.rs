@@ -680,6 +680,7 @@ impl Document {
             images,
             warnings,
             stats,
+            environment: None,
         })
     }
 }

@@ -569,6 +569,10 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
             }
         }
     }
+    let environment = match &scene.environment {
+        Some(image) if lit => textures::environment(image)?,
+        _ => None,
+    };
     let (mut hybrid_phong, mut hybrid_gouraud) = (0, 0);
     if options.shading == Shading::Hybrid {
         for item in &mut items {
@@ -634,6 +638,7 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
                 }
                 let shader = MaterialShader {
                     frequency,
+                    environment: environment.as_ref(),
                     fog: options.fog.map(|f| (f, forward)),
                     view_projection,
                     eye: camera.eye,

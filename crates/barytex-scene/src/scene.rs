@@ -108,6 +108,11 @@ pub struct Scene {
     pub warnings: Vec<String>,
     /// What was loaded and skipped.
     pub stats: SceneStats,
+    /// An equirectangular environment panorama (linear light; `barytex_uv`'s equirect
+    /// convention, −Z at the centre, +Y at the top) that lit materials reflect in proportion to
+    /// their smoothness — seed 000's environment mapping. glTF has no such slot: files load
+    /// with `None`; code (the demo) sets it.
+    pub environment: Option<Arc<AnyTexture2d>>,
 }
 
 impl Scene {

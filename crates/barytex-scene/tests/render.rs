@@ -511,3 +511,41 @@ fn normal_maps_perturb_only_per_pixel_shading() {
     };
     assert_eq!(srgb(&gouraud, &bumpy), srgb(&gouraud, &plain));
 }
+
+/// Environment mapping: the demo's mirror sphere reflects the sky panorama — without it the
+/// sphere (metallic, no diffuse) is nearly black; with it, its upper half shows the blue sky.
+#[test]
+fn the_mirror_sphere_reflects_the_environment() {
+    let scene = barytex_scene::demo::demo_scene();
+    let mut bare = scene.clone();
+    bare.environment = None;
+    let options = small(320, 180);
+    let (with, without) = (srgb(&options, &scene), srgb(&options, &bare));
+    // The mirror sphere's upper half in the 320 × 180 view (centre near (125, 119)).
+    let region: Vec<(u32, u32)> = (100..150)
+        .flat_map(|x| (102..115).map(move |y| (x, y)))
+        .filter(|&(x, y)| (x as f32 - 125.0).hypot(y as f32 - 119.0) < 14.0)
+        .collect();
+    assert!(region.len() > 100);
+    let mean = |pixels: &[[u8; 4]], k: usize| {
+        region
+            .iter()
+            .map(|&(x, y)| f64::from(at(pixels, 320, x, y)[k]))
+            .sum::<f64>()
+            / region.len() as f64
+    };
+    println!(
+        "mirror top: with sky rgb ({:.0}, {:.0}, {:.0}), without ({:.0}, {:.0}, {:.0})",
+        mean(&with, 0),
+        mean(&with, 1),
+        mean(&with, 2),
+        mean(&without, 0),
+        mean(&without, 1),
+        mean(&without, 2)
+    );
+    assert!(
+        mean(&with, 2) > mean(&with, 0) + 30.0,
+        "bluish sky reflected"
+    );
+    assert!(mean(&with, 2) > mean(&without, 2) + 60.0);
+}

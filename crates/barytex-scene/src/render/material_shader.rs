@@ -73,6 +73,8 @@ pub(crate) enum Frequency {
 /// Draws one primitive.
 pub(crate) struct MaterialShader<'a> {
     pub(crate) frequency: Frequency,
+    /// The scene's equirectangular environment, reflected by smooth lit surfaces.
+    pub(crate) environment: Option<&'a PreparedTexture>,
     /// Exponential fog over the final colour, with the camera's forward direction.
     pub(crate) fog: Option<(barytex_shade::ExponentialFog, Vec3)>,
     pub(crate) view_projection: Mat4,
@@ -263,6 +265,7 @@ impl Shader for MaterialShader<'_> {
             || m.occlusion_texture.is_some()
             || m.metallic_roughness_texture.is_some()
             || m.normal_texture.is_some()
+            || self.environment.is_some()
             || (m.lit && (self.primitive.normals.is_none() || self.frequency == Frequency::Flat));
         let (ddx, ddy) = if needs_derivatives {
             (f.ddx(), f.ddy())
@@ -332,7 +335,32 @@ impl Shader for MaterialShader<'_> {
             }
             self.light_terms(n, view, s.position, Self::shininess(roughness))
         };
-        let color = albedo * diffuse + specular_color * specular;
+        let mut color = albedo * diffuse + specular_color * specular;
+        // Environment mapping (seed 000): the reflected ray looks the panorama up, weighted by
+        // smoothness; its screen derivatives come from the position's and normal's, so the
+        // filter sees the footprint (a curved mirror minifies the panorama strongly).
+        if let Some(env) = self.environment {
+            let smooth = (1.0 - roughness) * (1.0 - roughness);
+            let n = if has_normals {
+                s.normal.normalize_or_zero()
+            } else {
+                ddx.position.cross(ddy.position).normalize_or_zero()
+            };
+            let reflect = |p: Vec3, n: Vec3| barytex_shade::reflection_direction(p, n, self.eye);
+            let r = reflect(s.position, n);
+            if smooth > 0.0 && r != Vec3::ZERO {
+                let dx = reflect(
+                    s.position + ddx.position,
+                    (s.normal + ddx.normal).normalize_or_zero(),
+                ) - r;
+                let dy = reflect(
+                    s.position + ddy.position,
+                    (s.normal + ddy.normal).normalize_or_zero(),
+                ) - r;
+                let sky = barytex_shade::Environment::Equirect(env).sample(r, dx, dy);
+                color += specular_color * sky.truncate() * smooth;
+            }
+        }
         let mut ambient = self.ambient * base.truncate();
         if let Some(o) = self.sample(m.occlusion_texture, &s, &ddx, &ddy) {
             ambient *= 1.0 + m.occlusion_strength * (o.x - 1.0);

@@ -38,6 +38,45 @@ impl PreparedTexture {
     }
 }
 
+impl barytex_texture::Sampler for PreparedTexture {
+    fn sample(&self, uv: Vec2, ddx: Vec2, ddy: Vec2) -> Vec4 {
+        Self::sample(self, uv, ddx, ddy)
+    }
+
+    fn sample_level(&self, uv: Vec2, lod: f32) -> Vec4 {
+        match self {
+            Self::Srgba8(s) => s.sample_level(uv, lod),
+            Self::Rgba8(s) => s.sample_level(uv, lod),
+            Self::R8(s) => s.sample_level(uv, lod),
+            Self::Rgba16f(s) => s.sample_level(uv, lod),
+            Self::Rgba32f(s) => s.sample_level(uv, lod),
+        }
+    }
+}
+
+/// An equirectangular environment ready to sample: a linear-light mip chain, trilinear with
+/// 8 anisotropic probes, repeating around (u) and clamped at the poles (v).
+pub(crate) fn environment(image: &AnyTexture2d) -> Result<Option<PreparedTexture>, TextureError> {
+    use barytex_texture::sampler::{AddressMode, FilterMode, MipmapFilterMode};
+    let descriptor = SamplerDescriptor {
+        address_mode_u: AddressMode::Repeat,
+        address_mode_v: AddressMode::ClampToEdge,
+        mag_filter: FilterMode::Linear,
+        min_filter: FilterMode::Linear,
+        mipmap_filter: MipmapFilterMode::Linear,
+        anisotropy_clamp: 8,
+        ..SamplerDescriptor::default()
+    };
+    Ok(Some(match image {
+        AnyTexture2d::Srgba8(t) => PreparedTexture::Srgba8(prepare(t, descriptor, true)?),
+        AnyTexture2d::Rgba8(t) => PreparedTexture::Rgba8(prepare(t, descriptor, true)?),
+        AnyTexture2d::R8(t) => PreparedTexture::R8(prepare(t, descriptor, true)?),
+        AnyTexture2d::Rgba16f(t) => PreparedTexture::Rgba16f(prepare(t, descriptor, true)?),
+        AnyTexture2d::Rgba32f(t) => PreparedTexture::Rgba32f(prepare(t, descriptor, true)?),
+        _ => return Ok(None),
+    }))
+}
+
 fn prepare<T: Texel>(
     texture: &Texture2d<T>,
     descriptor: SamplerDescriptor,
