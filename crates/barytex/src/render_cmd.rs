@@ -260,3 +260,55 @@ fn save(
         .map_err(|e| format!("cannot write {}: {e}", out.display()))?;
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_parse_and_refuse() {
+        assert_eq!(parse_size("800x600"), Ok((800, 600)));
+        assert_eq!(parse_size("64×48"), Ok((64, 48)));
+        for bad in ["0x10", "10x0", "16385x2", "800", "axb", "", "-1x5"] {
+            assert!(parse_size(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn cameras_filters_shadings_and_fog_parse_and_refuse() {
+        assert_eq!(parse_camera("auto"), Ok(CameraChoice::Auto));
+        assert_eq!(parse_camera("2"), Ok(CameraChoice::Index(2)));
+        assert!(parse_camera("-1").is_err() && parse_camera("first").is_err());
+        assert_eq!(parse_filter("aniso:16"), Ok(Filter::Anisotropic(16)));
+        assert_eq!(parse_filter("ewa"), Ok(Filter::Ewa));
+        for bad in ["aniso:0", "aniso:17", "aniso:", "cubic"] {
+            assert!(parse_filter(bad).is_err(), "{bad}");
+        }
+        assert_eq!(parse_shading("hybrid"), Ok(Shading::Hybrid));
+        assert!(parse_shading("pbr").is_err());
+        assert_eq!(parse_fog("0.04"), Ok(0.04));
+        for bad in ["-1", "nan", "inf", "thick"] {
+            assert!(parse_fog(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn anti_aliasing_parses_and_refuses() {
+        assert_eq!(parse_aa("none"), Ok(AntiAliasing::None));
+        assert_eq!(parse_aa("msaa:8"), Ok(AntiAliasing::Msaa(8)));
+        assert_eq!(parse_aa("ssaa:4"), Ok(AntiAliasing::Supersample(4)));
+        assert_eq!(parse_aa("jitter:3"), Ok(AntiAliasing::Jitter(3)));
+        assert_eq!(parse_aa("adaptive:40"), Ok(AntiAliasing::Adaptive(40)));
+        for bad in [
+            "msaa:3",
+            "msaa:32",
+            "ssaa:0",
+            "ssaa:17",
+            "adaptive:2",
+            "adaptive:999",
+            "fxaa",
+        ] {
+            assert!(parse_aa(bad).is_err(), "{bad}");
+        }
+    }
+}

@@ -91,7 +91,7 @@ fn quick_report_writes_every_family() {
     }
     let shading = std::fs::read_to_string(dir.join("shading.md")).unwrap();
     assert!(index.contains("shading.md"), "{index}");
-    for heading in ["Gouraud", "hybrid", "fast Phong", "SLERP"] {
+    for heading in ["Gouraud", "H-test", "fast approximate Phong", "SLERP"] {
         assert!(shading.contains(heading), "missing {heading:?}");
     }
     let strip = std::fs::read(dir.join("texture-filters-grazing.png")).unwrap();
@@ -234,4 +234,68 @@ fn render_writes_the_file_and_rejects_bad_options() {
         assert!(!stderr.contains("panicked"), "{bad:?}: {stderr}");
         assert!(!stderr.is_empty(), "{bad:?}: no message");
     }
+}
+
+/// glTFs that claim a 12 GB buffer, a billion-element accessor over a 12-byte buffer, or a
+/// billion-element accessor with no buffer at all (zeros) are refused with an error naming the
+/// object, before anything that size is allocated: the command runs under a 1 GiB
+/// address-space limit (`ulimit -v`), which allocating any of the claims would blow.
+#[test]
+fn huge_claims_are_refused_under_a_memory_limit() {
+    let dir = temp_dir("huge");
+    std::fs::create_dir_all(&dir).unwrap();
+    let tail = r#""meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+            "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]}"#;
+    let accessor = r#""componentType": 5126, "count": 1000000000, "type": "VEC3",
+            "min": [0, 0, 0], "max": [1, 1, 1]"#;
+    let files = [
+        (
+            "buffer",
+            format!(
+                r#"{{"asset": {{"version": "2.0"}},
+                "buffers": [{{"byteLength": 12000000000}}],
+                "bufferViews": [{{"buffer": 0, "byteLength": 12000000000}}],
+                "accessors": [{{"bufferView": 0, {accessor}}}], {tail}"#
+            ),
+            "/buffers/0",
+        ),
+        (
+            "accessor",
+            format!(
+                r#"{{"asset": {{"version": "2.0"}},
+                "buffers": [{{"byteLength": 12, "uri":
+                    "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}}],
+                "bufferViews": [{{"buffer": 0, "byteLength": 12}}],
+                "accessors": [{{"bufferView": 0, {accessor}}}], {tail}"#
+            ),
+            "/accessors/0",
+        ),
+        (
+            "zeros",
+            format!(r#"{{"asset": {{"version": "2.0"}}, "accessors": [{{{accessor}}}], {tail}"#),
+            "/accessors/0",
+        ),
+    ];
+    for (name, json, pointer) in files {
+        let gltf = dir.join(format!("{name}.gltf"));
+        std::fs::write(&gltf, json).unwrap();
+        let script = format!(
+            "ulimit -v 1048576 && exec '{}' render '{}' --size 16x16 -o '{}'",
+            env!("CARGO_BIN_EXE_barytex"),
+            gltf.display(),
+            dir.join("out.png").display()
+        );
+        let output = Command::new("bash").args(["-c", &script]).output().unwrap();
+        let stderr = String::from_utf8(output.stderr).unwrap();
+        assert!(!output.status.success(), "{name}");
+        assert!(
+            !stderr.contains("panicked") && !stderr.contains("memory allocation"),
+            "{name}: {stderr}"
+        );
+        assert!(
+            stderr.contains(pointer),
+            "{name}: the error names {pointer}: {stderr}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }
