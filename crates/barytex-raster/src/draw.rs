@@ -37,8 +37,16 @@ pub struct DrawStats {
     pub fragments_depth_failed: u64,
 }
 
-impl DrawStats {
-    fn add(&mut self, other: &Self) {
+/// Field by field: the statistics of several draws (or of a draw's tiles) summed.
+impl core::ops::AddAssign<&DrawStats> for DrawStats {
+    fn add_assign(&mut self, other: &Self) {
+        self.triangles_in += other.triangles_in;
+        self.dropped_bad_index += other.dropped_bad_index;
+        self.dropped_non_finite += other.dropped_non_finite;
+        self.clipped_away += other.clipped_away;
+        self.clipped += other.clipped;
+        self.culled += other.culled;
+        self.degenerate += other.degenerate;
         self.fragments_shaded += other.fragments_shaded;
         self.fragments_discarded += other.fragments_discarded;
         self.fragments_depth_failed += other.fragments_depth_failed;
@@ -152,7 +160,7 @@ pub fn draw<S: Shader>(
         })
         .collect();
     for t in &tile_stats {
-        stats.add(t);
+        stats += t;
     }
     stats
 }

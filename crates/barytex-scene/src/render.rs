@@ -307,8 +307,7 @@ fn highlight_scene(
     lights: &[WorldLight],
     m: &ShaderMaterial,
 ) -> barytex_shade::Scene {
-    let alpha_r = (m.roughness * m.roughness).clamp(0.02, 1.0);
-    let shininess = (2.0 / (alpha_r * alpha_r) - 2.0).max(1.0);
+    let shininess = material_shader::shininess(m.roughness);
     let base = m.base_color.truncate();
     let specular = Vec3::splat(0.04).lerp(base, m.metallic)
         * ((shininess + 8.0) / (8.0 * std::f32::consts::PI));
@@ -357,19 +356,6 @@ fn highlight_scene(
         },
         view: barytex_shade::ViewVector::Local,
     }
-}
-
-fn add_stats(total: &mut DrawStats, s: &DrawStats) {
-    total.triangles_in += s.triangles_in;
-    total.dropped_bad_index += s.dropped_bad_index;
-    total.dropped_non_finite += s.dropped_non_finite;
-    total.clipped_away += s.clipped_away;
-    total.clipped += s.clipped;
-    total.culled += s.culled;
-    total.degenerate += s.degenerate;
-    total.fragments_shaded += s.fragments_shaded;
-    total.fragments_discarded += s.fragments_discarded;
-    total.fragments_depth_failed += s.fragments_depth_failed;
 }
 
 /// Renders `scene` as `options` ask.
@@ -674,7 +660,7 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
                     ..PipelineState::default()
                 };
                 let s = draw(fb, &shader, &state, &item.vertices, indices);
-                add_stats(&mut total, &s);
+                total += &s;
             }
         }
     };

@@ -94,15 +94,17 @@ struct DemoArgs {
 }
 
 impl RenderArgs {
-    /// The demo's defaults: anisotropic filtering and 4× MSAA.
+    /// The demo's defaults, as `barytex_scene::demo::demo_options` sets them (anisotropic
+    /// filtering, 4× MSAA, fog).
     fn demo_defaults() -> Self {
+        let demo = barytex_scene::demo::demo_options(960, 540);
         Self {
-            size: (960, 540),
+            size: (demo.width, demo.height),
             camera: None,
-            shading: barytex_scene::render::Shading::Phong,
-            filter: Some(barytex_scene::render::Filter::Anisotropic(8)),
-            aa: Some(barytex_scene::render::AntiAliasing::Msaa(4)),
-            fog: Some(barytex_scene::demo::DEMO_FOG),
+            shading: demo.shading,
+            filter: Some(demo.filter),
+            aa: Some(demo.anti_aliasing),
+            fog: demo.fog.map(|f| f.density),
             threads: None,
             print_camera: false,
             stats: false,

@@ -57,3 +57,24 @@ pub(crate) fn median(values: &mut [f64]) -> f64 {
         0.5 * (values[mid - 1] + values[mid])
     }
 }
+
+/// Runs `render` `runs` times (at least once) in a one-thread rayon pool, so frame times do not
+/// depend on the machine's core count; returns the median seconds and the last result.
+pub(crate) fn median_frame_seconds<T: Send>(
+    runs: usize,
+    mut render: impl FnMut() -> T + Send,
+) -> (f64, T) {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("a one-thread pool");
+    let mut times = Vec::with_capacity(runs);
+    let mut last = None;
+    for _ in 0..runs.max(1) {
+        let start = Instant::now();
+        let out = pool.install(&mut render);
+        times.push(start.elapsed().as_secs_f64());
+        last = Some(out);
+    }
+    (median(&mut times), last.expect("at least one run"))
+}

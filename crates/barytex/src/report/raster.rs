@@ -3,8 +3,6 @@
 //! anti-aliasing (none, MSAA, supersampling regular / per-pixel jittered / accumulated,
 //! adaptive) on a Siemens star, against a 256-sample reference. Time is per frame, one thread.
 
-use std::time::Instant;
-
 use barytex_raster::{
     AdaptiveOptions, CullMode, Fragment, Framebuffer, Interpolation, PipelineState, SamplePattern,
     Shader, Viewport, draw, render_adaptive, render_supersampled,
@@ -13,7 +11,7 @@ use barytex_texture::Limits;
 use glam::{DVec3, Mat4, Vec2, Vec3, Vec4};
 
 use super::{ErrorStats, Row, Section, Settings, Table};
-use crate::timing::median;
+use crate::timing::median_frame_seconds;
 
 /// Texels per unit of uv in the perspective family (a 256² texture).
 const TEXELS: f64 = 256.0;
@@ -43,24 +41,6 @@ impl Shader for UvShader {
     fn fragment(&self, f: &Fragment<'_, Vec2>) -> Option<Vec4> {
         Some(Vec4::new(f.varying.x, f.varying.y, 0.0, 1.0))
     }
-}
-
-/// Runs `render` `runs` times in a one-thread pool; returns the median seconds and the last
-/// result.
-fn timed<T: Send>(runs: usize, mut render: impl FnMut() -> T + Send) -> (f64, T) {
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(1)
-        .build()
-        .expect("a one-thread pool");
-    let mut times = Vec::with_capacity(runs);
-    let mut last = None;
-    for _ in 0..runs.max(1) {
-        let start = Instant::now();
-        let out = pool.install(&mut render);
-        times.push(start.elapsed().as_secs_f64());
-        last = Some(out);
-    }
-    (median(&mut times), last.expect("at least one run"))
 }
 
 /// The perspective family: the slanted plane x + y = −1.2 from the origin looking down −z (60°
@@ -130,7 +110,7 @@ fn perspective_table(settings: Settings, runs: usize) -> Table {
             interpolation,
             ..PipelineState::default()
         };
-        let (seconds, fb) = timed(runs, || {
+        let (seconds, fb) = median_frame_seconds(runs, || {
             let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &Limits::default()).expect("small");
             draw(&mut fb, &shader, &state, &vertices, &indices);
             fb
@@ -315,7 +295,7 @@ fn anti_aliasing_table(settings: Settings, runs: usize) -> (Table, String) {
     let mut notes = Vec::new();
     let mut edge_pixels = 0;
     for (name, render) in &mut methods {
-        let (seconds, (fb, samples)) = timed(runs, render);
+        let (seconds, (fb, samples)) = median_frame_seconds(runs, render);
         let mut errors = Vec::new();
         let mut squared = 0.0;
         for y in 0..h {

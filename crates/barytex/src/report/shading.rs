@@ -3,8 +3,6 @@
 //! per-pixel Phong shading at 16 samples per pixel; and normal interpolation, lerp +
 //! renormalize against SLERP. Time is per frame (lighting preparation included), one thread.
 
-use std::time::Instant;
-
 use barytex_interp::{NormalInterpolation, interpolate_normal};
 use barytex_raster::{
     Framebuffer, PipelineState, SamplePattern, Shader, Viewport, draw, render_supersampled,
@@ -22,7 +20,7 @@ use glam::{Vec2, Vec3, Vec4};
 
 use super::table::per_case_matrix;
 use super::{ErrorStats, Row, Section, Settings, Table};
-use crate::timing::{median, ns_per_call};
+use crate::timing::{median_frame_seconds, ns_per_call};
 
 /// The sphere scene: a unit sphere seen from z = 3, one white directional light from the upper
 /// left front, a reddish plastic with a sharp highlight.
@@ -52,23 +50,6 @@ fn scene() -> Scene {
         },
         view: ViewVector::Local,
     }
-}
-
-/// Median seconds of `runs` renders in a one-thread pool, and the last result.
-fn timed<T: Send>(runs: usize, mut render: impl FnMut() -> T + Send) -> (f64, T) {
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(1)
-        .build()
-        .expect("a one-thread pool");
-    let mut times = Vec::with_capacity(runs);
-    let mut last = None;
-    for _ in 0..runs.max(1) {
-        let start = Instant::now();
-        let out = pool.install(&mut render);
-        times.push(start.elapsed().as_secs_f64());
-        last = Some(out);
-    }
-    (median(&mut times), last.expect("at least one run"))
 }
 
 fn frame<S: Shader>(size: u32, shader: &S, vertices: &[S::Vertex], indices: &[u32]) -> Framebuffer {
@@ -191,7 +172,7 @@ fn frequencies_table(mesh: &Mesh, label: &str, size: u32, runs: usize) -> (Table
     let mut rows = Vec::new();
     let mut pixels = 0;
     for (name, is_default, render) in &mut methods {
-        let (seconds, image) = timed(runs, render);
+        let (seconds, image) = median_frame_seconds(runs, render);
         let e = errors(&image, &reference);
         pixels = e.len();
         rows.push(Row {
