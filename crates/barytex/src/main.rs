@@ -8,8 +8,10 @@
 //! - `barytex examples`: the seed's worked examples, checked against exact arithmetic.
 //! - `barytex report [--out DIR] [--quick]`: the speed-vs-error report of the interpolation
 //!   methods, written as Markdown (`DIR/README.md`, `DIR/interp.md`; default `docs/report`).
+//! - `barytex uv-layout FILE [--scene N] [--size N] [-o DIR]`: the uv layout of every textured
+//!   primitive over its texture (default folder `<file stem>-uv-layout`).
 //! - `barytex uv-layout --mesh sphere|equal-area-sphere|torus|cylinder|cube|plane [--size N]
-//!   [--out FILE.png]`: a parametric mesh's uv layout (default `docs/uv-layout/<mesh>.png`).
+//!   [-o FILE.png]`: a parametric mesh's uv layout (default `docs/uv-layout/<mesh>.png`).
 
 mod demo;
 mod render_cmd;
@@ -157,21 +159,31 @@ enum Command {
     Examples,
     /// Measure every method's speed and error on the same inputs and write the Markdown report.
     Report(ReportArgs),
-    /// Draw a parametric mesh's uv layout (wireframe over a checker, seams in red) to a PNG.
+    /// Draw uv layouts (wireframe, seams in red): a glTF file's textured primitives over their
+    /// textures, or a parametric mesh's over a checker.
     UvLayout(UvLayoutArgs),
 }
 
-/// Options of `barytex uv-layout`.
+/// Options of `barytex uv-layout` (a glTF file or `--mesh`, not both).
 #[derive(Debug, Args)]
+#[command(group(clap::ArgGroup::new("source").required(true).args(["file", "mesh"])))]
 struct UvLayoutArgs {
-    /// Which mesh.
+    /// A glTF (.gltf) or GLB (.glb) file: one picture per textured primitive, over the texture
+    /// its material samples (the base colour texture, else its first), in that texture's uv set
+    /// and transform.
+    file: Option<PathBuf>,
+    /// Which of the file's scenes (default: its `scene`, else the first).
+    #[arg(long, requires = "file")]
+    scene: Option<usize>,
+    /// A built-in parametric mesh instead of a file.
     #[arg(long, value_enum)]
-    mesh: uv_layout::MeshKind,
+    mesh: Option<uv_layout::MeshKind>,
     /// Picture side in pixels (1 to 8192).
     #[arg(long, default_value_t = 512)]
     size: u32,
-    /// The PNG to write (default `docs/uv-layout/<mesh>.png`).
-    #[arg(long)]
+    /// With `--mesh`, the PNG to write (default `docs/uv-layout/<mesh>.png`); with a file, the
+    /// folder for its pictures (default `<file stem>-uv-layout`).
+    #[arg(short, long)]
     out: Option<PathBuf>,
 }
 
@@ -194,7 +206,27 @@ fn command_line() -> String {
         .join(" ")
 }
 
+/// Makes `barytex … | head` end quietly: `println!` panics when the reader has gone, and that
+/// panic's message and backtrace are noise, not a bug. Every other panic reports as usual.
+fn quiet_on_closed_stdout() {
+    let default = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        let message = info
+            .payload()
+            .downcast_ref::<String>()
+            .map(String::as_str)
+            .or_else(|| info.payload().downcast_ref::<&str>().copied())
+            .unwrap_or_default();
+        if message.starts_with("failed printing to stdout") && message.contains("Broken pipe") {
+            // What a shell reports for a process ended by SIGPIPE.
+            std::process::exit(141);
+        }
+        default(info);
+    }));
+}
+
 fn main() -> ExitCode {
+    quiet_on_closed_stdout();
     let cli = Cli::parse();
     let result = match cli.command {
         None => render_cmd::run(&RenderArgs::demo_defaults().options(
@@ -221,11 +253,24 @@ fn main() -> ExitCode {
             quick: args.quick,
             command: command_line(),
         }),
-        Some(Command::UvLayout(args)) => uv_layout::run(&uv_layout::Options {
-            mesh: args.mesh,
-            size: args.size,
-            out: args.out,
-        }),
+        Some(Command::UvLayout(args)) => {
+            // clap's `source` group already requires exactly one of the two.
+            let source = match (args.file, args.mesh) {
+                (Some(path), None) => Ok(uv_layout::Source::File {
+                    path,
+                    scene: args.scene,
+                }),
+                (None, Some(kind)) => Ok(uv_layout::Source::Mesh(kind)),
+                _ => Err("uv-layout takes a FILE or --mesh, not both".into()),
+            };
+            source.and_then(|source| {
+                uv_layout::run(&uv_layout::Options {
+                    source,
+                    size: args.size,
+                    out: args.out,
+                })
+            })
+        }
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,5 +1,8 @@
-//! `barytex uv-layout`: draws a parametric mesh's uv layout (wireframe over a checker, seams in
-//! red) to a PNG.
+//! `barytex uv-layout`: draws uv layouts (wireframe, seams in red) to PNGs: a parametric mesh's
+//! over a checker (`--mesh`), or every textured primitive of a glTF scene over its texture
+//! (`FILE`, in [`scene`]).
+
+pub(crate) mod scene;
 
 use std::path::PathBuf;
 
@@ -52,19 +55,46 @@ impl MeshKind {
 
 /// What `uv-layout` was asked for.
 pub(crate) struct Options {
-    pub(crate) mesh: MeshKind,
+    /// A glTF/GLB file, or a parametric mesh.
+    pub(crate) source: Source,
+    /// Picture side in pixels.
     pub(crate) size: u32,
+    /// The PNG (`--mesh`) or the folder (`FILE`) to write.
     pub(crate) out: Option<PathBuf>,
 }
 
-/// Draws the picture and writes it (default `docs/uv-layout/<mesh>.png`), printing where.
+/// Where the meshes come from.
+pub(crate) enum Source {
+    /// One of the parametric meshes.
+    Mesh(MeshKind),
+    /// The textured primitives of a glTF file's scene.
+    File {
+        /// The `.gltf` or `.glb`.
+        path: PathBuf,
+        /// Which of its scenes.
+        scene: Option<usize>,
+    },
+}
+
+/// Draws the pictures and writes them, printing where.
 pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
-    let mesh = options.mesh.build()?;
-    let picture = draw_uv_layout(&mesh, options.size, &LayoutOptions::default())?;
-    let out = options
-        .out
-        .clone()
-        .unwrap_or_else(|| PathBuf::from(format!("docs/uv-layout/{}.png", options.mesh.name())));
+    match &options.source {
+        Source::Mesh(kind) => run_mesh(*kind, options.size, options.out.clone()),
+        Source::File { path, scene } => {
+            scene::run_file(path, *scene, options.size, options.out.clone())
+        }
+    }
+}
+
+/// Draws a parametric mesh and writes it (default `docs/uv-layout/<mesh>.png`).
+fn run_mesh(
+    kind: MeshKind,
+    size: u32,
+    out: Option<PathBuf>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let mesh = kind.build()?;
+    let picture = draw_uv_layout(&mesh, size, &LayoutOptions::default())?;
+    let out = out.unwrap_or_else(|| PathBuf::from(format!("docs/uv-layout/{}.png", kind.name())));
     if let Some(parent) = out.parent().filter(|p| !p.as_os_str().is_empty()) {
         std::fs::create_dir_all(parent)?;
     }
@@ -72,8 +102,8 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     println!(
         "wrote {} ({}×{}, {} triangles)",
         out.display(),
-        options.size,
-        options.size,
+        size,
+        size,
         mesh.indices.len()
     );
     if let Some(d) = MeshDistortion::of(&mesh) {
