@@ -397,6 +397,8 @@ pub fn demo_scene() -> Scene {
         textures,
         images,
         warnings: Vec::new(),
+        // The demo's images are generated, not decoded.
+        decode_seconds: 0.0,
         environment: sky(),
         stats: crate::scene::SceneStats {
             meshes_loaded: 5,

@@ -621,6 +621,7 @@ impl Document {
             instances.push(instance);
         }
 
+        let mut decode_seconds = 0.0;
         // Images: every one checked; decoded only where a used material samples it.
         let mut wanted: BTreeSet<(usize, bool)> = BTreeSet::new();
         for mesh in decoded.iter().flatten() {
@@ -656,6 +657,7 @@ impl Document {
                 stats.images_skipped += 1;
             }
             if options.decode_images {
+                let decoding = std::time::Instant::now();
                 if wants_srgb {
                     slot.srgb = Some(Arc::new(def.decode(&bytes, ColorSpace::Srgb, limits)?));
                     stats.images_decoded += 1;
@@ -664,6 +666,7 @@ impl Document {
                     slot.linear = Some(Arc::new(def.decode(&bytes, ColorSpace::Linear, limits)?));
                     stats.images_decoded += 1;
                 }
+                decode_seconds += decoding.elapsed().as_secs_f64();
             }
             images.push(slot);
         }
@@ -680,6 +683,7 @@ impl Document {
             images,
             warnings,
             stats,
+            decode_seconds,
             environment: None,
         })
     }

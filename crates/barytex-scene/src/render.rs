@@ -31,6 +31,7 @@
 mod camera;
 mod material_shader;
 mod options;
+mod raster_only;
 mod surface;
 mod textures;
 
@@ -52,6 +53,7 @@ use crate::light::LightKind;
 use crate::material::{AlphaMode, TextureRef};
 use crate::scene::Scene;
 use material_shader::{Frequency, MaterialShader, ShaderMaterial, WorldLight, WorldPrimitive};
+use raster_only::RasterOnly;
 use textures::Textures;
 
 /// Why a scene could not be rendered.
@@ -124,8 +126,15 @@ pub struct RenderStats {
     pub hybrid_gouraud_triangles: usize,
     /// Seconds preparing geometry, textures and mip chains.
     pub prepare_seconds: f64,
+    /// Of `prepare_seconds`, those preparing mipmapped textures (level 0's copy and its chain).
+    pub mip_seconds: f64,
     /// Seconds rasterizing and shading (the two are interleaved per pixel).
     pub draw_seconds: f64,
+    /// With [`RenderOptions::measure_stages`]: seconds the same passes took with a fragment
+    /// shader that returns a constant (vertex stage, clipping, coverage, depth test,
+    /// interpolation of the varyings, writes). `draw_seconds` minus this is the shading's cost.
+    /// Alpha-masked fragments are not discarded in that pass, so it may do slightly more work.
+    pub raster_seconds: Option<f64>,
 }
 
 /// A rendered image with its camera and statistics.
@@ -603,10 +612,10 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
         options.anti_aliasing,
         AntiAliasing::Supersample(_) | AntiAliasing::Jitter(_)
     );
-    let mut total = DrawStats::default();
-    let mut passes = 0_u32;
-    let mut draw_scene = |fb: &mut Framebuffer, shift: Vec2| {
-        passes += 1;
+    // Every item, in order, into `fb` shifted by `shift`; with a constant fragment stage when
+    // `raster_only`.
+    let draw_items = |fb: &mut Framebuffer, shift: Vec2, raster_only: bool| {
+        let mut stats = DrawStats::default();
         for &i in &order {
             let item = &items[i];
             let frequency = match options.shading {
@@ -659,10 +668,33 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
                     sample_shading,
                     ..PipelineState::default()
                 };
-                let s = draw(fb, &shader, &state, &item.vertices, indices);
-                total += &s;
+                let s = if raster_only {
+                    draw(fb, &RasterOnly(&shader), &state, &item.vertices, indices)
+                } else {
+                    draw(fb, &shader, &state, &item.vertices, indices)
+                };
+                stats += &s;
             }
         }
+        stats
+    };
+    let mut total = DrawStats::default();
+    let mut passes = 0_u32;
+    // Seconds of the constant-shader passes, and of those passes with their copies (taken out
+    // of the draw time).
+    let (mut raster_seconds, mut measuring_seconds) = (0.0, 0.0);
+    let mut draw_scene = |fb: &mut Framebuffer, shift: Vec2| {
+        passes += 1;
+        if options.measure_stages {
+            // The same pass from the same state (depth, mask), into a copy that is dropped.
+            let copying = Instant::now();
+            let mut scratch = fb.clone();
+            let started = Instant::now();
+            draw_items(&mut scratch, shift, true);
+            raster_seconds += started.elapsed().as_secs_f64();
+            measuring_seconds += copying.elapsed().as_secs_f64();
+        }
+        total += &draw_items(fb, shift, false);
     };
     let limits = Limits::default();
     let background = options.background;
@@ -730,7 +762,7 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
             (fb, spp)
         }
     };
-    let draw_seconds = drawing.elapsed().as_secs_f64();
+    let draw_seconds = drawing.elapsed().as_secs_f64() - measuring_seconds;
     Ok(Rendered {
         image,
         camera,
@@ -751,7 +783,9 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
             hybrid_phong_triangles: hybrid_phong,
             hybrid_gouraud_triangles: hybrid_gouraud,
             prepare_seconds,
+            mip_seconds: textures.mip_seconds,
             draw_seconds,
+            raster_seconds: options.measure_stages.then_some(raster_seconds),
         },
     })
 }

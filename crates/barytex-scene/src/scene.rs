@@ -108,6 +108,9 @@ pub struct Scene {
     pub warnings: Vec<String>,
     /// What was loaded and skipped.
     pub stats: SceneStats,
+    /// Seconds the load spent decoding images (PNG/JPEG to texels). Kept out of
+    /// [`SceneStats`], whose counts are the same on every run.
+    pub decode_seconds: f64,
     /// An equirectangular environment panorama (linear light; `barytex_uv`'s equirect
     /// convention, −Z at the centre, +Y at the top) that lit materials reflect in proportion to
     /// their smoothness — seed 000's environment mapping. glTF has no such slot: files load

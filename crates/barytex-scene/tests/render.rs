@@ -236,6 +236,39 @@ fn the_demo_is_the_same_for_any_thread_count() {
     assert_eq!(run(1), run(3));
 }
 
+/// `measure_stages` times a second, constant-shader draw of every pass into a scratch copy: the
+/// image and the counts are those of the plain render, and only the measured render reports a
+/// rasterization time. Adaptive supersampling is included: its passes depend on the image, so a
+/// copy that leaked into the target would change them.
+#[test]
+fn measuring_the_stages_changes_nothing_but_the_timings() {
+    let scene = barytex_scene::demo::demo_scene();
+    for anti_aliasing in [AntiAliasing::Msaa(4), AntiAliasing::Adaptive(8)] {
+        let plain = RenderOptions {
+            anti_aliasing,
+            ..demo_options(96, 54)
+        };
+        let measured = RenderOptions {
+            measure_stages: true,
+            ..plain
+        };
+        let (a, b) = (
+            render(&scene, &plain).expect("renders"),
+            render(&scene, &measured).expect("renders"),
+        );
+        assert_eq!(a.stats.raster_seconds, None);
+        let raster = b.stats.raster_seconds.expect("measured");
+        assert!(raster > 0.0 && raster.is_finite(), "{raster}");
+        assert_eq!(a.stats.draw, b.stats.draw, "{anti_aliasing:?}");
+        assert_eq!(a.stats.passes, b.stats.passes, "{anti_aliasing:?}");
+        assert_eq!(
+            a.image.to_srgba8().expect("small").texels(),
+            b.image.to_srgba8().expect("small").texels(),
+            "{anti_aliasing:?}"
+        );
+    }
+}
+
 /// The demo against `tests/golden/demo-320x180.png`: at most 2 sRGB steps apart anywhere and 0.05
 /// on average (the same build gives identical bytes; the slack is for other libm versions).
 /// `BARYTEX_BLESS=1` rewrites the golden image.

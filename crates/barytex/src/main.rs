@@ -59,13 +59,14 @@ struct RenderArgs {
     /// adaptive:N (up to N samples where needed).
     #[arg(long, value_parser = render_cmd::parse_aa)]
     aa: Option<barytex_scene::render::AntiAliasing>,
-    /// Worker threads (default: all cores); the image is the same for any count.
+    /// Worker threads (absent or 0: all cores); the image is the same for any count.
     #[arg(long)]
     threads: Option<usize>,
     /// Print the view and projection matrices.
     #[arg(long)]
     print_camera: bool,
-    /// Print what the loader and renderer did (textures, mips, fragments, skipped objects).
+    /// Print what the loader and renderer did (textures, mips, fragments, skipped objects), and
+    /// time rasterization apart from shading (one more draw with a constant shader).
     #[arg(long)]
     stats: bool,
 }
@@ -139,6 +140,7 @@ impl RenderArgs {
                         distance: barytex_shade::FogDistance::Euclidean,
                     }),
                 background,
+                measure_stages: false,
             },
             threads: self.threads,
             out,

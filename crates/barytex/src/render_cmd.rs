@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use barytex_scene::render::{
-    AntiAliasing, CameraChoice, Filter, RenderOptions, Rendered, Shading, render,
+    AntiAliasing, CameraChoice, Filter, RenderOptions, RenderStats, Rendered, Shading, render,
 };
 use barytex_scene::{LoadOptions, Scene, load_path};
 
@@ -207,6 +207,58 @@ fn print_stats(rendered: &Rendered, scene: &Scene) {
     }
 }
 
+/// `stages: …`, the time of each stage in milliseconds. Rasterization and shading are told
+/// apart only when the render measured them (`--stats`).
+fn stage_line(load: f64, decode: f64, s: &RenderStats, save: f64) -> String {
+    let ms = |seconds: f64| format!("{:.1} ms", seconds * 1e3);
+    let draw = match s.raster_seconds {
+        Some(raster) => format!(
+            "raster {}, shade {}",
+            ms(raster),
+            ms((s.draw_seconds - raster).max(0.0))
+        ),
+        None => format!("raster + shade {}", ms(s.draw_seconds)),
+    };
+    format!(
+        "stages: load {}, decode {}, prepare {}, mips {}, {draw}, encode + write {}",
+        ms(load - decode),
+        ms(decode),
+        ms(s.prepare_seconds - s.mip_seconds),
+        ms(s.mip_seconds),
+        ms(save)
+    )
+}
+
+/// A spinner on standard error naming the stage at work; indicatif hides it when standard error
+/// is not a terminal (logs, pipes, tests).
+struct Progress(indicatif::ProgressBar);
+
+impl Progress {
+    fn start() -> Self {
+        let bar = indicatif::ProgressBar::new_spinner();
+        if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} {msg} {elapsed}") {
+            bar.set_style(style);
+        }
+        bar.enable_steady_tick(std::time::Duration::from_millis(100));
+        Self(bar)
+    }
+
+    fn stage(&self, what: &'static str) {
+        self.0.set_message(what);
+    }
+
+    fn finish(&self) {
+        self.0.finish_and_clear();
+    }
+}
+
+impl Drop for Progress {
+    /// Clears the spinner on the error paths too.
+    fn drop(&mut self) {
+        self.0.finish_and_clear();
+    }
+}
+
 /// Loads or builds the scene, renders it, writes the PNG.
 pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     let pool = rayon::ThreadPoolBuilder::new()
@@ -222,23 +274,32 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         options.render.height,
         pool.current_num_threads()
     );
+    let progress = Progress::start();
+    progress.stage("loading");
     let (scene, load_seconds) = load(options)?;
-    let rendered = pool.install(|| render(&scene, &options.render))?;
-    if options.print_camera {
-        println!("{}", rendered.camera.describe());
-    }
+    progress.stage("rendering");
+    let render_options = RenderOptions {
+        measure_stages: options.stats,
+        ..options.render
+    };
+    let rendered = pool.install(|| render(&scene, &render_options))?;
+    progress.stage("writing");
     let started = Instant::now();
     let image = rendered.image.to_srgba8()?;
     save(&image, &options.out)?;
     let save_seconds = started.elapsed().as_secs_f64();
-    let s = &rendered.stats;
+    progress.finish();
+    if options.print_camera {
+        println!("{}", rendered.camera.describe());
+    }
     println!(
-        "stages: load {:.1} ms, prepare (geometry, textures, mips) {:.1} ms, raster + shade \
-         {:.1} ms, encode + write {:.1} ms",
-        load_seconds * 1e3,
-        s.prepare_seconds * 1e3,
-        s.draw_seconds * 1e3,
-        save_seconds * 1e3
+        "{}",
+        stage_line(
+            load_seconds,
+            scene.decode_seconds,
+            &rendered.stats,
+            save_seconds
+        )
     );
     if options.stats {
         print_stats(&rendered, &scene);

@@ -130,6 +130,11 @@ pub struct RenderOptions {
     /// Exponential fog (Euclidean distance from the eye) over lit and unlit surfaces; `None`:
     /// clear air.
     pub fog: Option<barytex_shade::ExponentialFog>,
+    /// Also time every pass again with a constant fragment shader into a scratch copy of the
+    /// target, to split the draw time into rasterization and shading
+    /// ([`RenderStats::raster_seconds`](super::RenderStats::raster_seconds)). Costs about one
+    /// more draw; the image is unchanged.
+    pub measure_stages: bool,
 }
 
 impl Default for RenderOptions {
@@ -145,6 +150,7 @@ impl Default for RenderOptions {
             anti_aliasing: AntiAliasing::None,
             background: Vec4::new(0.18, 0.18, 0.2, 1.0),
             fog: None,
+            measure_stages: false,
         }
     }
 }

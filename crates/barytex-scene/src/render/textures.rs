@@ -112,6 +112,8 @@ pub(crate) struct Textures {
     pub(crate) mip_chains: usize,
     /// Textures whose filter uses mipmaps but that are never minified: no chain built.
     pub(crate) mips_skipped: usize,
+    /// Seconds preparing the mipmapped textures (level 0's copy and the chain).
+    pub(crate) mip_seconds: f64,
 }
 
 /// The largest texels-per-pixel ratio (square root of the area ratio) of any on-screen triangle
@@ -161,6 +163,7 @@ impl Textures {
             } else if wants_mips {
                 self.mips_skipped += 1;
             }
+            let preparing = std::time::Instant::now();
             let prepared = match decoded.as_ref() {
                 AnyTexture2d::Srgba8(t) => {
                     PreparedTexture::Srgba8(prepare(t, descriptor, mipmapped)?)
@@ -177,6 +180,9 @@ impl Textures {
                 }
                 _ => return Ok(None),
             };
+            if mipmapped {
+                self.mip_seconds += preparing.elapsed().as_secs_f64();
+            }
             self.list.push(prepared);
             self.index.insert(key, self.list.len() - 1);
             self.list.len() - 1

@@ -1,0 +1,53 @@
+//! `barytex demo|render` prints the time of every stage; `--stats` splits rasterization from
+//! shading.
+#![allow(clippy::unwrap_used)]
+
+use std::process::Command;
+
+fn stages_line(extra: &[&str]) -> String {
+    let out = std::env::temp_dir().join(format!("barytex-stages-{}.png", std::process::id()));
+    let output = Command::new(env!("CARGO_BIN_EXE_barytex"))
+        .args(["demo", "--size", "64x36", "-o"])
+        .arg(&out)
+        .args(extra)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    assert!(output.status.success(), "{stdout}");
+    let _ = std::fs::remove_file(&out);
+    stdout
+        .lines()
+        .find(|l| l.starts_with("stages: "))
+        .unwrap_or_else(|| panic!("no stages line in:\n{stdout}"))
+        .to_owned()
+}
+
+/// The milliseconds after `name ` in the stages line.
+fn milliseconds(line: &str, name: &str) -> f64 {
+    let rest = line
+        .split(", ")
+        .find_map(|part| part.trim_start_matches("stages: ").strip_prefix(name))
+        .unwrap_or_else(|| panic!("no `{name}` in {line}"));
+    rest.trim().trim_end_matches(" ms").parse().unwrap()
+}
+
+#[test]
+fn every_stage_is_timed() {
+    let plain = stages_line(&[]);
+    for stage in [
+        "load ",
+        "decode ",
+        "prepare ",
+        "mips ",
+        "raster + shade ",
+        "encode + write ",
+    ] {
+        assert!(milliseconds(&plain, stage) >= 0.0, "{plain}");
+    }
+    let split = stages_line(&["--stats"]);
+    let (raster, shade) = (
+        milliseconds(&split, "raster "),
+        milliseconds(&split, "shade "),
+    );
+    assert!(raster > 0.0 && shade >= 0.0, "{split}");
+}
