@@ -1,0 +1,171 @@
+//! What the rasterizer benchmarks share: a mesh already in clip space, a nearest-texel texture,
+//! and the same shading written once for barytex's pipeline and once for euc's.
+
+#![allow(dead_code)] // Each benchmark uses its part.
+
+use barytex_raster::{CullMode, Fragment, Framebuffer, PipelineState, Shader, draw};
+use barytex_texture::Limits;
+use euc::Pipeline;
+use euc::buffer::Buffer2d;
+use euc::rasterizer::{BackfaceCullingDisabled, Triangles};
+use glam::{Vec2, Vec3, Vec4};
+
+/// Clip positions (z in [0, w]), uvs and normals per vertex; triangles as index triples.
+pub(crate) struct ClipMesh {
+    pub(crate) clip: Vec<Vec4>,
+    pub(crate) uv: Vec<Vec2>,
+    pub(crate) normal: Vec<Vec3>,
+    pub(crate) indices: Vec<u32>,
+}
+
+/// Packed `0xAARRGGBB` texels, row-major from the top-left, looked up nearest with repeat (done
+/// by hand on both sides, as euc's own example does, so the rasterizers are compared, not the
+/// samplers).
+pub(crate) struct NearestTexture {
+    pub(crate) width: usize,
+    pub(crate) height: usize,
+    pub(crate) texels: Vec<u32>,
+}
+
+impl NearestTexture {
+    /// A two-colour checker of `cell`-texel squares.
+    pub(crate) fn checker(side: usize, cell: usize) -> Self {
+        Self {
+            width: side,
+            height: side,
+            texels: (0..side * side)
+                .map(|i| {
+                    let (x, y) = (i % side, i / side);
+                    if (x / cell + y / cell) % 2 == 0 {
+                        0xFFE0_E0E0
+                    } else {
+                        0xFF20_4080
+                    }
+                })
+                .collect(),
+        }
+    }
+
+    pub(crate) fn texel(&self, uv: Vec2) -> u32 {
+        let wrap = |t: f32, n: usize| ((t - t.floor()) * n as f32) as usize % n.max(1);
+        self.texels[wrap(uv.y, self.height) * self.width + wrap(uv.x, self.width)]
+    }
+}
+
+pub(crate) fn unpack(c: u32) -> Vec4 {
+    Vec4::new(
+        ((c >> 16) & 0xff) as f32 / 255.0,
+        ((c >> 8) & 0xff) as f32 / 255.0,
+        (c & 0xff) as f32 / 255.0,
+        1.0,
+    )
+}
+
+/// barytex's side: positions already in clip space.
+struct BarytexShader<'a> {
+    mesh: &'a ClipMesh,
+    texture: &'a NearestTexture,
+    light: Vec3,
+    lit: bool,
+}
+
+impl Shader for BarytexShader<'_> {
+    type Vertex = u32;
+    type Varying = (Vec2, Vec3);
+    fn vertex(&self, &i: &u32) -> (Vec4, (Vec2, Vec3)) {
+        let i = i as usize;
+        (self.mesh.clip[i], (self.mesh.uv[i], self.mesh.normal[i]))
+    }
+    fn fragment(&self, f: &Fragment<'_, (Vec2, Vec3)>) -> Option<Vec4> {
+        let c = unpack(self.texture.texel(f.varying.0));
+        Some(if self.lit {
+            let lambert = f.varying.1.normalize_or_zero().dot(self.light).max(0.0);
+            (c.truncate() * (0.15 + lambert)).extend(1.0)
+        } else {
+            c
+        })
+    }
+}
+
+/// euc's side: the same data, the same shading, packed ARGB output.
+struct EucPipeline<'a> {
+    mesh: &'a ClipMesh,
+    texture: &'a NearestTexture,
+    light: Vec3,
+    lit: bool,
+}
+
+impl Pipeline for EucPipeline<'_> {
+    type Vertex = u32;
+    type VsOut = (vek::Vec2<f32>, vek::Vec3<f32>);
+    type Pixel = u32;
+    fn vert(&self, &i: &u32) -> ([f32; 4], Self::VsOut) {
+        let i = i as usize;
+        let (uv, n) = (self.mesh.uv[i], self.mesh.normal[i]);
+        (
+            self.mesh.clip[i].to_array(),
+            (vek::Vec2::new(uv.x, uv.y), vek::Vec3::new(n.x, n.y, n.z)),
+        )
+    }
+    fn frag(&self, (uv, n): &Self::VsOut) -> u32 {
+        let c = self.texture.texel(Vec2::new(uv.x, uv.y));
+        if self.lit {
+            let n = Vec3::new(n.x, n.y, n.z).normalize_or_zero();
+            let k = 0.15 + n.dot(self.light).max(0.0);
+            let s = |v: u32| ((v & 0xff) as f32 * k).min(255.0) as u32;
+            0xFF00_0000 | s(c >> 16) << 16 | s(c >> 8) << 8 | s(c)
+        } else {
+            c
+        }
+    }
+}
+
+fn light() -> Vec3 {
+    Vec3::new(0.3, 0.8, 0.5).normalize()
+}
+
+/// Draws `mesh` into a new `size²` barytex target, depth-tested, no culling.
+pub(crate) fn render_barytex(
+    mesh: &ClipMesh,
+    texture: &NearestTexture,
+    lit: bool,
+    size: u32,
+) -> Framebuffer {
+    let mut fb = Framebuffer::new(size, size, Vec4::ZERO, &Limits::default()).expect("size²");
+    let shader = BarytexShader {
+        mesh,
+        texture,
+        light: light(),
+        lit,
+    };
+    let state = PipelineState {
+        cull: CullMode::None,
+        ..PipelineState::default()
+    };
+    let vertices: Vec<u32> = (0..mesh.clip.len() as u32).collect();
+    draw(&mut fb, &shader, &state, &vertices, &mesh.indices);
+    fb
+}
+
+/// Draws `mesh` into a new `size²` euc target, depth-tested, no culling.
+pub(crate) fn render_euc(
+    mesh: &ClipMesh,
+    texture: &NearestTexture,
+    lit: bool,
+    size: u32,
+) -> Buffer2d<u32> {
+    let mut color = Buffer2d::new([size as usize, size as usize], 0_u32);
+    let mut depth = Buffer2d::new([size as usize, size as usize], 1.0_f32);
+    let pipeline = EucPipeline {
+        mesh,
+        texture,
+        light: light(),
+        lit,
+    };
+    pipeline.draw::<Triangles<'_, Buffer2d<f32>, BackfaceCullingDisabled>, _>(
+        &mesh.indices,
+        &mut color,
+        Some(&mut depth),
+    );
+    color
+}
