@@ -36,7 +36,7 @@ impl NearestTexture {
             texels: (0..side * side)
                 .map(|i| {
                     let (x, y) = (i % side, i / side);
-                    if (x / cell + y / cell) % 2 == 0 {
+                    if (x / cell + y / cell).is_multiple_of(2) {
                         0xFFE0_E0E0
                     } else {
                         0xFF20_4080
