@@ -54,6 +54,7 @@ use crate::material::{AlphaMode, TextureRef};
 use crate::scene::Scene;
 use material_shader::{Frequency, MaterialShader, ShaderMaterial, WorldLight, WorldPrimitive};
 use raster_only::RasterOnly;
+use surface::Reads;
 use textures::Textures;
 
 /// Why a scene could not be rendered.
@@ -124,6 +125,13 @@ pub struct RenderStats {
     pub hybrid_phong_triangles: usize,
     /// Hybrid shading: triangles shaded Gouraud.
     pub hybrid_gouraud_triangles: usize,
+    /// Varying floats interpolated per fragment, summed over the draws (a primitive split by
+    /// hybrid shading counts twice): only what each material reads at its shading frequency.
+    pub varyings_interpolated: usize,
+    /// Varying floats not interpolated because the material never reads them, summed likewise
+    /// (the full varying is 24 floats: position, normal, two uv sets, colour, Gouraud's vertex
+    /// light, tangent).
+    pub varyings_skipped: usize,
     /// Seconds preparing geometry, textures and mip chains.
     pub prepare_seconds: f64,
     /// Of `prepare_seconds`, those preparing mipmapped textures (level 0's copy and its chain).
@@ -612,17 +620,49 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
         options.anti_aliasing,
         AntiAliasing::Supersample(_) | AntiAliasing::Jitter(_)
     );
+    let frequency = match options.shading {
+        Shading::Flat => Frequency::Flat,
+        Shading::Gouraud | Shading::Hybrid => Frequency::Gouraud,
+        Shading::Unlit | Shading::Phong => Frequency::Phong,
+    };
+    let items = &items;
+    let shader_for = |i: usize, frequency| MaterialShader {
+        frequency,
+        environment: environment.as_ref(),
+        fog: options.fog.map(|f| (f, forward)),
+        view_projection,
+        eye: camera.eye,
+        primitive: &items[i].primitive,
+        material: items[i].material,
+        textures: &textures.list,
+        lights: &lights,
+        ambient: Vec3::splat(0.03),
+    };
+    // The varying floats each draw interpolates, and those it skips (never read).
+    let (mut varyings_interpolated, mut varyings_skipped) = (0, 0);
+    for (i, item) in items.iter().enumerate() {
+        for (frequency, indices) in [
+            (frequency, &item.indices),
+            (Frequency::Phong, &item.phong_indices),
+        ] {
+            if !indices.is_empty() {
+                let reads = shader_for(i, frequency).reads();
+                for (part, _, floats) in Reads::PARTS {
+                    if reads.contains(part) {
+                        varyings_interpolated += floats;
+                    } else {
+                        varyings_skipped += floats;
+                    }
+                }
+            }
+        }
+    }
     // Every item, in order, into `fb` shifted by `shift`; with a constant fragment stage when
     // `raster_only`.
     let draw_items = |fb: &mut Framebuffer, shift: Vec2, raster_only: bool| {
         let mut stats = DrawStats::default();
         for &i in &order {
             let item = &items[i];
-            let frequency = match options.shading {
-                Shading::Flat => Frequency::Flat,
-                Shading::Gouraud | Shading::Hybrid => Frequency::Gouraud,
-                Shading::Unlit | Shading::Phong => Frequency::Phong,
-            };
             let passes: [(Frequency, &[u32]); 2] = [
                 (frequency, &item.indices),
                 (Frequency::Phong, &item.phong_indices),
@@ -631,18 +671,7 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
                 if indices.is_empty() {
                     continue;
                 }
-                let shader = MaterialShader {
-                    frequency,
-                    environment: environment.as_ref(),
-                    fog: options.fog.map(|f| (f, forward)),
-                    view_projection,
-                    eye: camera.eye,
-                    primitive: &item.primitive,
-                    material: item.material,
-                    textures: &textures.list,
-                    lights: &lights,
-                    ambient: Vec3::splat(0.03),
-                };
+                let shader = shader_for(i, frequency);
                 let state = PipelineState {
                     cull: if item.double_sided {
                         CullMode::None
@@ -782,10 +811,64 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
             tangents_generated,
             hybrid_phong_triangles: hybrid_phong,
             hybrid_gouraud_triangles: hybrid_gouraud,
+            varyings_interpolated,
+            varyings_skipped,
             prepare_seconds,
             mip_seconds: textures.mip_seconds,
             draw_seconds,
             raster_seconds: options.measure_stages.then_some(raster_seconds),
         },
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::atomic::Ordering;
+
+    use super::*;
+    use crate::demo::{demo_options, demo_scene};
+
+    fn pixels(scene: &Scene, options: &RenderOptions) -> Vec<[u8; 4]> {
+        let out = render(scene, options).expect("renders");
+        let image = out.image.to_srgba8().expect("small");
+        image.texels().iter().map(|t| t.0).collect()
+    }
+
+    /// Interpolating only what a material reads changes no pixel by more than one sRGB step
+    /// (the one difference: an absent vertex colour is exactly white instead of a weighted sum
+    /// of whites), for every shading model and with and without fog.
+    #[test]
+    fn skipping_unread_varyings_changes_no_pixel() {
+        let scene = demo_scene();
+        for shading in [
+            Shading::Unlit,
+            Shading::Flat,
+            Shading::Gouraud,
+            Shading::Phong,
+            Shading::Hybrid,
+        ] {
+            for fog in [demo_options(1, 1).fog, None] {
+                let options = RenderOptions {
+                    shading,
+                    fog,
+                    ..demo_options(96, 54)
+                };
+                surface::INTERPOLATE_ALL.store(true, Ordering::Relaxed);
+                let everything = pixels(&scene, &options);
+                surface::INTERPOLATE_ALL.store(false, Ordering::Relaxed);
+                let read = pixels(&scene, &options);
+                let worst = everything
+                    .iter()
+                    .zip(&read)
+                    .flat_map(|(a, b)| (0..4).map(move |c| a[c].abs_diff(b[c])))
+                    .max()
+                    .unwrap_or(0);
+                assert!(
+                    worst <= 1,
+                    "{shading:?}, fog {}: {worst} steps",
+                    fog.is_some()
+                );
+            }
+        }
+    }
 }

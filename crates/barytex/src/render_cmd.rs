@@ -175,6 +175,11 @@ fn print_stats(rendered: &Rendered, scene: &Scene) {
         s.textures, s.mip_chains, s.mips_skipped, s.tangents_generated
     );
     println!(
+        "varyings: {} floats interpolated per fragment over the draws, {} skipped (never read by \
+         their material)",
+        s.varyings_interpolated, s.varyings_skipped
+    );
+    println!(
         "draw: {} passes, {:.2} samples/pixel, {} fragments shaded, {} discarded, {} failed depth; \
          triangles culled {}, clipped {}, clipped away {}, degenerate {}, non-finite {}",
         s.passes,

@@ -9,7 +9,7 @@ use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
 
 use crate::light::LightKind;
 use crate::material::AlphaMode;
-use crate::render::surface::Surface;
+use crate::render::surface::{Reads, Surface};
 use crate::render::textures::{PreparedTexture, Slot};
 
 /// A light in world space, ready to evaluate.
@@ -105,6 +105,53 @@ fn cone_attenuation(cos_angle: f32, inner: f32, outer: f32) -> f32 {
 }
 
 impl MaterialShader<'_> {
+    /// The parts of the varying [`fragment`](Shader::fragment) reads for this material,
+    /// primitive and shading frequency; only those are interpolated.
+    pub(crate) fn reads(&self) -> Reads {
+        #[cfg(test)]
+        if crate::render::surface::INTERPOLATE_ALL.load(std::sync::atomic::Ordering::Relaxed) {
+            return Reads::ALL;
+        }
+        let m = &self.material;
+        let p = self.primitive;
+        let has_normals = p.normals.is_some();
+        let per_vertex_light = m.lit
+            && match self.frequency {
+                Frequency::Gouraud => has_normals,
+                Frequency::Flat => p.lighting.is_some(),
+                Frequency::Phong => false,
+            };
+        let per_pixel_normal = m.lit
+            && has_normals
+            && (self.frequency == Frequency::Phong || self.environment.is_some());
+        let normal_mapped = m.lit
+            && has_normals
+            && self.frequency == Frequency::Phong
+            && m.normal_texture.is_some()
+            && p.tangents.is_some();
+        let slots = [
+            m.base_texture,
+            m.emissive_texture,
+            m.occlusion_texture,
+            m.metallic_roughness_texture,
+            m.normal_texture,
+        ];
+        let uses_set = |set: u32| {
+            slots
+                .iter()
+                .flatten()
+                .any(|s| (s.tex_coord == 1) == (set == 1))
+        };
+        Reads::default()
+            .with_if(Reads::POSITION, m.lit || self.fog.is_some())
+            .with_if(Reads::NORMAL, per_pixel_normal)
+            .with_if(Reads::UV0, uses_set(0))
+            .with_if(Reads::UV1, uses_set(1))
+            .with_if(Reads::COLOR, p.colors.is_some())
+            .with_if(Reads::LIGHT, per_vertex_light)
+            .with_if(Reads::TANGENT, normal_mapped)
+    }
+
     fn light_terms(&self, n: Vec3, view: Vec3, position: Vec3, shininess: f32) -> (Vec3, Vec3) {
         light_terms(self.lights, n, view, position, shininess)
     }
@@ -241,6 +288,7 @@ impl Shader for MaterialShader<'_> {
                 .and_then(|t| t.get(i))
                 .copied()
                 .unwrap_or_default(),
+            reads: self.reads(),
             ..Surface::default()
         };
         let mut surface = surface;
