@@ -30,6 +30,8 @@ pub(crate) struct Point {
     pub(crate) peer: bool,
     /// Drawn with a black ring (the crate's default method).
     pub(crate) highlight: bool,
+    /// On the Pareto front: joined to the other such points by a dashed staircase.
+    pub(crate) pareto: bool,
 }
 
 /// A scatter chart with logarithmic axes.
@@ -55,7 +57,7 @@ const PLOT_BOTTOM: f64 = 352.0;
 /// Height of the "0" and "∞" bands.
 const BAND: f64 = 26.0;
 /// Gap between a band and the log scale.
-const GAP: f64 = 10.0;
+const GAP: f64 = 16.0;
 const LINE: f64 = 17.0;
 const BLUE: &str = "#1f77b4";
 const ORANGE: &str = "#e66100";
@@ -275,7 +277,7 @@ impl ScatterChart {
 
         let mut notes = vec![
             "Both axes are logarithmic. Blue circles: barytex; orange squares: peers (other \
-             libraries, ports); ringed: the default."
+             libraries, ports); ringed: the default; dashed: the Pareto front (★)."
                 .to_owned(),
         ];
         match (has_zero, has_inf) {
@@ -474,6 +476,28 @@ impl ScatterChart {
                 highlight: p.highlight,
             })
             .collect();
+        // The Pareto front as a staircase: right along each point's error, then down to the next.
+        let mut front: Vec<&Placed> = placed
+            .iter()
+            .filter(|p| self.points[p.number - 1].pareto)
+            .collect();
+        front.sort_by(|a, b| a.cx.total_cmp(&b.cx).then(b.cy.total_cmp(&a.cy)));
+        if front.len() > 1 {
+            let mut path = format!("M {} {}", px(front[0].cx), px(front[0].cy));
+            for pair in front.windows(2) {
+                let _ = write!(
+                    path,
+                    " H {} V {}",
+                    px(pair[1].cx),
+                    px(pair[1].cy)
+                );
+            }
+            let _ = writeln!(
+                svg,
+                "<path class=\"front\" d=\"{path}\" fill=\"none\" stroke=\"#777777\" \
+                 stroke-width=\"1.2\" stroke-dasharray=\"5 3\"/>"
+            );
+        }
         for p in &placed {
             let point = &self.points[p.number - 1];
             let tooltip = format!("{}: {}", p.number, escape(&point.label));
@@ -620,6 +644,13 @@ fn label_positions(points: &[Placed]) -> Vec<(f64, f64, &'static str, usize)> {
             };
             (dx, dy, anchor, rect)
         });
+        // Numbers keep 2 px from each other.
+        let padded = |r: &Rect| Rect {
+            x0: r.x0 - 2.0,
+            y0: r.y0 - 2.0,
+            x1: r.x1 + 2.0,
+            y1: r.y1 + 2.0,
+        };
         let cost = |rect: &Rect| {
             let area = (rect.x1 - rect.x0) * (rect.y1 - rect.y0);
             let outside = area - rect.overlap(&frame);
@@ -628,7 +659,7 @@ fn label_positions(points: &[Placed]) -> Vec<(f64, f64, &'static str, usize)> {
                 .enumerate()
                 .filter(|(j, _)| *j != i)
                 .map(|(_, m)| rect.overlap(m))
-                .chain(taken.iter().map(|t| rect.overlap(t)))
+                .chain(taken.iter().map(|t| padded(rect).overlap(t)))
                 .sum();
             hits + 2.0 * outside
         };
@@ -655,6 +686,7 @@ mod tests {
             y,
             peer: false,
             highlight: false,
+            pareto: false,
         }
     }
 
@@ -921,6 +953,42 @@ mod tests {
             }
         }
         check_well_formed(&chart(points).to_svg());
+    }
+
+    #[test]
+    fn pareto_front_is_a_staircase_through_its_points() {
+        let mut points = vec![
+            point("fast", 2.0, 1e-3),
+            point("dominated", 50.0, 1e-2),
+            point("exact", 100.0, 0.0),
+            point("middle", 10.0, 1e-5),
+        ];
+        for i in [0, 2, 3] {
+            points[i].pareto = true;
+        }
+        let svg = chart(points.clone()).to_svg();
+        check_well_formed(&svg);
+        let (fx, fy) = circle(&svg, 1);
+        let (mx, my) = circle(&svg, 4);
+        let (ex, ey) = circle(&svg, 3);
+        let needle = "class=\"front\" d=\"";
+        let start = svg.find(needle).expect("no front") + needle.len();
+        let end = svg[start..].find('"').expect("unterminated") + start;
+        let expected = format!(
+            "M {} {} H {} V {} H {} V {}",
+            px(fx),
+            px(fy),
+            px(mx),
+            px(my),
+            px(ex),
+            px(ey)
+        );
+        assert_eq!(&svg[start..end], expected);
+        // One point on the front: no line.
+        for p in &mut points[2..] {
+            p.pareto = false;
+        }
+        assert!(!chart(points).to_svg().contains("class=\"front\""));
     }
 
     #[test]

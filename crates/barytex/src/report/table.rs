@@ -156,6 +156,7 @@ impl Table {
                     y: row.primary_error(),
                     peer: is_peer(&row.method),
                     highlight: row.is_default,
+                    pareto: row.pareto,
                 }
             })
             .collect();
@@ -166,8 +167,8 @@ impl Table {
             points,
             notes: if self.rows.iter().any(|r| r.pareto) {
                 vec![
-                    "★: on the Pareto front (no other method of the table is both faster and more \
-                     accurate)."
+                    "★: on the Pareto front (no other method of the table is both at least as \
+                     fast and at least as accurate, and better in one)."
                         .to_owned(),
                 ]
             } else {
