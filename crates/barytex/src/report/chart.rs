@@ -65,6 +65,8 @@ const ORANGE: &str = "#e66100";
 const MAX_TICKS: i32 = 10;
 /// Legend labels are cut to this many characters.
 const MAX_LABEL_CHARS: usize = 104;
+/// Notes are wrapped at this many characters (11 px text).
+const MAX_NOTE_CHARS: usize = 112;
 
 /// Where a point's y lies.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -277,9 +279,16 @@ impl ScatterChart {
 
         let mut notes = vec![
             "Both axes are logarithmic. Blue circles: barytex; orange squares: peers (other \
-             libraries, ports); ringed: the default; dashed: the Pareto front (★)."
+             libraries, ports); ringed: the default."
                 .to_owned(),
         ];
+        if self.points.iter().any(|p| p.pareto) {
+            notes.push(
+                "Dashed line and ★: the Pareto front (no other method is at least as fast and as \
+                 accurate, and better in one)."
+                    .to_owned(),
+            );
+        }
         match (has_zero, has_inf) {
             (true, true) => notes.push(
                 "Grey bands outside the scale: “0 (exact)” holds zero errors, “∞ / NaN” infinite \
@@ -305,6 +314,7 @@ impl ScatterChart {
             ));
         }
 
+        let notes: Vec<String> = notes.iter().flat_map(|n| wrap(n, MAX_NOTE_CHARS)).collect();
         let notes_top = PLOT_BOTTOM + 66.0;
         let legend_top = notes_top + LINE * notes.len() as f64 + 10.0;
         let height = legend_top + LINE * self.points.len() as f64 + 8.0;
@@ -569,7 +579,19 @@ impl ScatterChart {
                     px(y - 4.0)
                 );
             }
+            if point.highlight {
+                let _ = writeln!(
+                    svg,
+                    "<circle cx=\"{}\" cy=\"{}\" r=\"8\" fill=\"none\" stroke=\"black\" \
+                     stroke-width=\"1.2\"/>",
+                    px(x),
+                    px(y - 4.0)
+                );
+            }
             let mut label = truncate(&point.label, MAX_LABEL_CHARS);
+            if point.pareto {
+                label.push_str(" ★");
+            }
             if omitted.contains(&n) {
                 label.push_str(" — not plotted");
             }
@@ -585,6 +607,27 @@ impl ScatterChart {
         svg.push_str("</svg>\n");
         svg
     }
+}
+
+/// `text` broken at spaces into lines of at most `max_chars` characters (a longer word gets a
+/// line of its own).
+fn wrap(text: &str, max_chars: usize) -> Vec<String> {
+    let mut lines = Vec::new();
+    let mut line = String::new();
+    for word in text.split_whitespace() {
+        let needed = line.chars().count() + usize::from(!line.is_empty()) + word.chars().count();
+        if !line.is_empty() && needed > max_chars {
+            lines.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.push_str(word);
+    }
+    if !line.is_empty() {
+        lines.push(line);
+    }
+    lines
 }
 
 fn truncate(text: &str, max_chars: usize) -> String {
@@ -999,6 +1042,19 @@ mod tests {
         assert_eq!(power_of_ten(-7), "10⁻⁷");
         assert_eq!(power_of_ten(-10), "10⁻¹⁰");
         assert_eq!(power_of_ten(39), "10³⁹");
+    }
+
+    #[test]
+    fn notes_wrap_at_spaces() {
+        assert_eq!(wrap("a bb ccc dddd", 6), ["a bb", "ccc", "dddd"]);
+        assert_eq!(wrap("unbreakable-word x", 4), ["unbreakable-word", "x"]);
+        assert!(wrap("", 10).is_empty());
+        let svg = ScatterChart {
+            notes: vec!["word ".repeat(60)],
+            ..chart(vec![point("a", 1.0, 1.0)])
+        }
+        .to_svg();
+        assert!(svg.matches("class=\"note\"").count() >= 4);
     }
 
     #[test]

@@ -147,9 +147,6 @@ impl Table {
                 if row.is_default {
                     label.push_str(" (default)");
                 }
-                if row.pareto {
-                    label.push_str(" ★");
-                }
                 Point {
                     label,
                     x: row.ns,
@@ -165,15 +162,7 @@ impl Table {
             x_label: format!("time per {unit} (ns)"),
             y_label,
             points,
-            notes: if self.rows.iter().any(|r| r.pareto) {
-                vec![
-                    "★: on the Pareto front (no other method of the table is both at least as \
-                     fast and at least as accurate, and better in one)."
-                        .to_owned(),
-                ]
-            } else {
-                Vec::new()
-            },
+            notes: Vec::new(),
         })
     }
 
