@@ -90,7 +90,10 @@ fn quick_report_writes_and_links_the_charts() {
             );
             assert!(svg.trim_end().ends_with("</svg>"), "{chart}");
             assert!(svg.contains("class=\"point"), "{chart} has no points");
-            assert!(svg.contains("(ns)</text>"), "{chart} has no time axis label");
+            assert!(
+                svg.contains("(ns)</text>"),
+                "{chart} has no time axis label"
+            );
             assert!(!svg.contains("NaN\""), "{chart} has a NaN coordinate");
             assert!(linked.insert(chart.clone()), "{chart} linked twice");
         }

@@ -66,7 +66,7 @@ const MAX_TICKS: i32 = 10;
 /// Legend labels are cut to this many characters.
 const MAX_LABEL_CHARS: usize = 104;
 /// Notes are wrapped at this many characters (11 px text).
-const MAX_NOTE_CHARS: usize = 112;
+const MAX_NOTE_CHARS: usize = 122;
 
 /// Where a point's y lies.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -261,11 +261,7 @@ impl ScatterChart {
         } else {
             PLOT_BOTTOM
         };
-        let xs = LogScale::covering(
-            plotted.iter().map(|(_, p, _)| p.x),
-            PLOT_LEFT,
-            PLOT_RIGHT,
-        );
+        let xs = LogScale::covering(plotted.iter().map(|(_, p, _)| p.x), PLOT_LEFT, PLOT_RIGHT);
         let ys = LogScale::covering(
             plotted.iter().filter_map(|(_, _, y)| match y {
                 YPlace::Log(v) => Some(*v),
@@ -368,7 +364,10 @@ impl ScatterChart {
         }
 
         // Grid, ticks and tick labels.
-        let _ = writeln!(svg, "<g class=\"grid\" stroke=\"#dddddd\" stroke-width=\"1\">");
+        let _ = writeln!(
+            svg,
+            "<g class=\"grid\" stroke=\"#dddddd\" stroke-width=\"1\">"
+        );
         for v in xs.minor_ticks() {
             let x = xs.map(v);
             let _ = writeln!(
@@ -495,12 +494,7 @@ impl ScatterChart {
         if front.len() > 1 {
             let mut path = format!("M {} {}", px(front[0].cx), px(front[0].cy));
             for pair in front.windows(2) {
-                let _ = write!(
-                    path,
-                    " H {} V {}",
-                    px(pair[1].cx),
-                    px(pair[1].cy)
-                );
+                let _ = write!(path, " H {} V {}", px(pair[1].cx), px(pair[1].cy));
             }
             let _ = writeln!(
                 svg,
@@ -762,7 +756,11 @@ mod tests {
             } else {
                 let self_closing = tag.ends_with('/');
                 let body = tag.trim_end_matches('/');
-                let name = body.split_whitespace().next().expect("empty tag").to_owned();
+                let name = body
+                    .split_whitespace()
+                    .next()
+                    .expect("empty tag")
+                    .to_owned();
                 check_attributes(&body[name.len()..]);
                 if stack.is_empty() {
                     assert!(!seen_root, "second root element {name}");
@@ -819,7 +817,9 @@ mod tests {
     /// The values of every numeric-looking attribute.
     fn numeric_attributes(svg: &str) -> Vec<String> {
         let mut out = Vec::new();
-        for attr in ["x", "y", "x1", "x2", "y1", "y2", "cx", "cy", "width", "height"] {
+        for attr in [
+            "x", "y", "x1", "x2", "y1", "y2", "cx", "cy", "width", "height",
+        ] {
             let needle = format!(" {attr}=\"");
             let mut rest = svg;
             while let Some(at) = rest.find(&needle) {
@@ -931,7 +931,9 @@ mod tests {
         assert!(exact_y > fine_y && fine_y > inf_y && (nan_y - inf_y).abs() < 0.05);
         // The unplottable times and the negative error are omitted, and listed.
         assert_eq!(svg.matches("class=\"point\"").count(), 4);
-        assert!(svg.contains("Not plotted (time not positive and finite, or a negative error): 4, 5, 6, 7."));
+        assert!(svg.contains(
+            "Not plotted (time not positive and finite, or a negative error): 4, 5, 6, 7."
+        ));
         assert_eq!(svg.matches(" — not plotted").count(), 4);
     }
 
@@ -976,7 +978,9 @@ mod tests {
 
     #[test]
     fn numbers_avoid_each_other_when_points_coincide() {
-        let points: Vec<Point> = (0..4).map(|i| point(&format!("p{i}"), 10.0, 1e-3)).collect();
+        let points: Vec<Point> = (0..4)
+            .map(|i| point(&format!("p{i}"), 10.0, 1e-3))
+            .collect();
         let placed: Vec<Placed> = (0..4)
             .map(|i| Placed {
                 number: i + 1,
