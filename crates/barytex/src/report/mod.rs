@@ -2,7 +2,10 @@
 //!
 //! Each family module runs every method on the same inputs, measures its error against an
 //! exact-rational (or f64 Newton) reference and its time per call, and returns a [`Section`] of
-//! [`Table`]s; this module marks the Pareto front and writes the Markdown.
+//! [`Table`]s; this module marks the Pareto front and writes the Markdown, with a speed-vs-error
+//! chart (SVG, [`chart`]) under every table that has an error measure. While the families run, a
+//! progress bar on stderr shows which one is being measured (only when stderr is a terminal;
+//! otherwise plain progress lines, as logs want).
 
 mod barycentric_2d;
 mod barycentric_3d;
@@ -132,6 +135,20 @@ impl Progress {
         self.bar.inc(1);
     }
 
+    /// Runs family `index` with its progress lines.
+    fn measure<T>(
+        &self,
+        index: usize,
+        name: &str,
+        family: impl FnOnce(&mut dyn FnMut(&str)) -> T,
+    ) -> T {
+        let started = std::time::Instant::now();
+        self.start(index, name);
+        let result = family(&mut |step: &str| self.step(index, name, step));
+        self.done(index, name, started.elapsed().as_secs_f64());
+        result
+    }
+
     fn finish(&self) {
         self.bar.finish_and_clear();
     }
@@ -155,31 +172,18 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         ("UV distortion", uv_distortion::run),
     ];
     let progress = Progress::new(families.len() + 3);
-    // Runs one family with its progress lines and marks its Pareto fronts.
-    let measure = |index: usize, name: &str, family: &mut dyn FnMut(&mut dyn FnMut(&str))| {
-        let started = std::time::Instant::now();
-        progress.start(index, name);
-        family(&mut |step: &str| progress.step(index, name, step));
-        progress.done(index, name, started.elapsed().as_secs_f64());
-    };
     let mut sections = Vec::with_capacity(families.len());
     for (index, (name, family)) in families.into_iter().enumerate() {
-        measure(index, name, &mut |step| {
-            sections.push(family(settings, step));
-        });
+        sections.push(progress.measure(index, name, |step| family(settings, step)));
     }
-    let mut texture = (Section::default(), Vec::new());
-    measure(sections.len(), "texture filters", &mut |step| {
-        texture = texture_filters::run(settings, step);
+    let (mut texture, files) = progress.measure(sections.len(), "texture filters", |step| {
+        texture_filters::run(settings, step)
     });
-    let (mut texture, files) = texture;
-    let mut raster = Section::default();
-    measure(sections.len() + 1, "rasterizer", &mut |step| {
-        raster = raster::run(settings, step);
+    let mut raster = progress.measure(sections.len() + 1, "rasterizer", |step| {
+        raster::run(settings, step)
     });
-    let mut shading = Section::default();
-    measure(sections.len() + 2, "shading", &mut |step| {
-        shading = shading::run(settings, step);
+    let mut shading = progress.measure(sections.len() + 2, "shading", |step| {
+        shading::run(settings, step)
     });
     progress.finish();
     for section in sections
