@@ -298,6 +298,7 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
             description: set.description,
             inputs: set.inputs.len(),
             sign_total: format!("of {} weights", 3 * set.inputs.len()),
+            error_label: "max abs error of the weights".to_owned(),
             ..Table::default()
         };
         let mut matrix: Vec<Vec<String>> = vec![Vec::new(); set.inputs.len()];

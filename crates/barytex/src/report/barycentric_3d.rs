@@ -158,6 +158,7 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
             description,
             inputs: inputs.len(),
             sign_total: format!("of {} weights", 3 * inputs.len()),
+            error_label: "max abs error of the weights".to_owned(),
             ..Table::default()
         };
         let mut matrix: Vec<Vec<String>> = vec![Vec::new(); inputs.len()];

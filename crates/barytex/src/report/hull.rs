@@ -239,6 +239,8 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
                 "vertex-set differences vs exact, of {} points",
                 points.len()
             ),
+            time_unit: "input point".to_owned(),
+            error_label: "vertex-set differences (count)".to_owned(),
             ..Table::default()
         };
         let mut matrix = Vec::new();
@@ -325,6 +327,8 @@ fn hard_case_table(runs: usize) -> Table {
                       all cases."
             .to_owned(),
         sign_total: "vertex-set differences vs exact, all cases".to_owned(),
+        time_unit: "input point".to_owned(),
+        error_label: "vertex-set differences (count)".to_owned(),
         ..Table::default()
     };
     let cases = hulls_2d();

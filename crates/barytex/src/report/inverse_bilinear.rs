@@ -247,6 +247,7 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
             title: title.clone(),
             description,
             inputs: cases.len(),
+            error_label: "max error in (α, β)".to_owned(),
             ..Table::default()
         };
         let timing_inputs: Vec<(Vec2, [Vec2; 4])> = cases.iter().map(|c| (c.p, c.quad)).collect();

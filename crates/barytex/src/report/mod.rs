@@ -2,10 +2,14 @@
 //!
 //! Each family module runs every method on the same inputs, measures its error against an
 //! exact-rational (or f64 Newton) reference and its time per call, and returns a [`Section`] of
-//! [`Table`]s; this module marks the Pareto front and writes the Markdown.
+//! [`Table`]s; this module marks the Pareto front and writes the Markdown, with a speed-vs-error
+//! chart (SVG, [`chart`]) under every table that has an error measure. While the families run, a
+//! progress bar on stderr shows which one is being measured (only when stderr is a terminal;
+//! otherwise plain progress lines, as logs want).
 
 mod barycentric_2d;
 mod barycentric_3d;
+mod chart;
 mod hull;
 mod inverse_bilinear;
 mod orientation;
@@ -19,6 +23,8 @@ mod uv_mappings;
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+
+use indicatif::{ProgressBar, ProgressStyle};
 
 pub(crate) use table::{ErrorStats, Row, Section, Table};
 
@@ -70,7 +76,85 @@ impl Settings {
     }
 }
 
-/// Run every family and write `README.md` and `interp.md` into `options.out`.
+/// Progress over the families: an indicatif bar on stderr when stderr is a terminal, else (tests,
+/// CI logs, redirects) one plain line per step, as before the bar existed.
+struct Progress {
+    bar: ProgressBar,
+    count: usize,
+}
+
+impl Progress {
+    fn new(count: usize) -> Self {
+        // `ProgressBar::new` draws on stderr and is hidden when stderr is not a terminal.
+        let bar = ProgressBar::new(count as u64);
+        if let Ok(style) = ProgressStyle::with_template(
+            "{elapsed_precise} [{bar:30.cyan/blue}] {pos}/{len} {wide_msg}",
+        ) {
+            bar.set_style(style.progress_chars("=> "));
+        }
+        if !bar.is_hidden() {
+            bar.enable_steady_tick(std::time::Duration::from_millis(250));
+        }
+        Self { bar, count }
+    }
+
+    /// A line for the log: above the bar when it is drawn, else plain on stderr.
+    fn line(&self, text: &str) {
+        if self.bar.is_hidden() {
+            eprintln!("{text}");
+        } else {
+            self.bar.println(text);
+        }
+    }
+
+    /// Family `index` (from 0) starts.
+    fn start(&self, index: usize, name: &str) {
+        if self.bar.is_hidden() {
+            eprintln!("[{}/{}] {name} …", index + 1, self.count);
+        } else {
+            self.bar.set_message(name.to_owned());
+        }
+    }
+
+    /// A step within family `index`.
+    fn step(&self, index: usize, name: &str, step: &str) {
+        if self.bar.is_hidden() {
+            eprintln!("[{}/{}] {name}: {step}", index + 1, self.count);
+        } else {
+            self.bar.set_message(format!("{name}: {step}"));
+        }
+    }
+
+    /// Family `index` is done after `seconds`.
+    fn done(&self, index: usize, name: &str, seconds: f64) {
+        self.line(&format!(
+            "[{}/{}] {name}: done in {seconds:.1} s",
+            index + 1,
+            self.count
+        ));
+        self.bar.inc(1);
+    }
+
+    /// Runs family `index` with its progress lines.
+    fn measure<T>(
+        &self,
+        index: usize,
+        name: &str,
+        family: impl FnOnce(&mut dyn FnMut(&str)) -> T,
+    ) -> T {
+        let started = std::time::Instant::now();
+        self.start(index, name);
+        let result = family(&mut |step: &str| self.step(index, name, step));
+        self.done(index, name, started.elapsed().as_secs_f64());
+        result
+    }
+
+    fn finish(&self) {
+        self.bar.finish_and_clear();
+    }
+}
+
+/// Run every family and write `README.md`, the pages and their charts into `options.out`.
 ///
 /// # Errors
 /// When the output directory or a file cannot be written.
@@ -87,45 +171,39 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         ("UV mappings", uv_mappings::run),
         ("UV distortion", uv_distortion::run),
     ];
-    let count = families.len();
-    let mut sections = Vec::with_capacity(count);
+    let progress = Progress::new(families.len() + 3);
+    let mut sections = Vec::with_capacity(families.len());
     for (index, (name, family)) in families.into_iter().enumerate() {
-        let started = std::time::Instant::now();
-        eprintln!("[{}/{count}] {name} …", index + 1);
-        let mut progress = |step: &str| eprintln!("[{}/{count}] {name}: {step}", index + 1);
-        let mut section = family(settings, &mut progress);
+        sections.push(progress.measure(index, name, |step| family(settings, step)));
+    }
+    let (mut texture, files) = progress.measure(sections.len(), "texture filters", |step| {
+        texture_filters::run(settings, step)
+    });
+    let mut raster = progress.measure(sections.len() + 1, "rasterizer", |step| {
+        raster::run(settings, step)
+    });
+    let mut shading = progress.measure(sections.len() + 2, "shading", |step| {
+        shading::run(settings, step)
+    });
+    progress.finish();
+    for section in sections
+        .iter_mut()
+        .chain([&mut texture, &mut raster, &mut shading])
+    {
         for table in &mut section.tables {
             table.mark_pareto();
         }
-        eprintln!(
-            "[{}/{count}] {name}: done in {:.1} s",
-            index + 1,
-            started.elapsed().as_secs_f64()
-        );
-        sections.push(section);
     }
-    eprintln!("[texture] texture filters …");
-    let started = std::time::Instant::now();
-    let (mut texture, files) =
-        texture_filters::run(settings, &mut |step| eprintln!("[texture] {step}"));
-    for table in &mut texture.tables {
-        table.mark_pareto();
+
+    let mut charts = Vec::new();
+    for section in &mut sections {
+        let prefix = format!("interp-{}", slug(&section.heading));
+        charts.extend(attach_charts(&prefix, section));
     }
-    eprintln!("[texture] done in {:.1} s", started.elapsed().as_secs_f64());
-    eprintln!("[raster] rasterizer families …");
-    let started = std::time::Instant::now();
-    let mut raster = raster::run(settings, &mut |step| eprintln!("[raster] {step}"));
-    for table in &mut raster.tables {
-        table.mark_pareto();
-    }
-    eprintln!("[raster] done in {:.1} s", started.elapsed().as_secs_f64());
-    eprintln!("[shading] shading families …");
-    let started = std::time::Instant::now();
-    let mut shading = shading::run(settings, &mut |step| eprintln!("[shading] {step}"));
-    for table in &mut shading.tables {
-        table.mark_pareto();
-    }
-    eprintln!("[shading] done in {:.1} s", started.elapsed().as_secs_f64());
+    charts.extend(attach_charts("texture", &mut texture));
+    charts.extend(attach_charts("raster", &mut raster));
+    charts.extend(attach_charts("shading", &mut shading));
+
     std::fs::create_dir_all(&options.out)?;
     let interp = render_interp(options, settings, &sections);
     let index = render_index(options, &sections, &[&texture, &raster, &shading]);
@@ -146,6 +224,9 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         &options.out.join("shading.md"),
         &render_page(options, "shading (`barytex-shade`)", &shading),
     )?;
+    for (name, svg) in &charts {
+        write(&options.out.join(name), svg)?;
+    }
     write(&options.out.join("README.md"), &index)?;
     eprintln!(
         "wrote {}, {}, {}, {} and {}",
@@ -155,7 +236,47 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         options.out.join("raster.md").display(),
         options.out.join("shading.md").display()
     );
+    eprintln!(
+        "wrote {} speed-vs-error charts ({}/*.svg)",
+        charts.len(),
+        options.out.display()
+    );
     Ok(())
+}
+
+/// Builds the chart of every table of `section` that has one, names its file
+/// `{prefix}-{table}.svg` and records the name in the table (so that the page links it).
+/// Returns `(file name, SVG)` pairs.
+fn attach_charts(prefix: &str, section: &mut Section) -> Vec<(String, String)> {
+    let mut charts: Vec<(String, String)> = Vec::new();
+    for table in &mut section.tables {
+        let Some(chart) = table.scatter_chart(&section.heading) else {
+            continue;
+        };
+        let stem = format!("{prefix}-{}", slug(&table.title));
+        let mut name = format!("{stem}.svg");
+        let mut n = 2;
+        while charts.iter().any(|(taken, _)| *taken == name) {
+            name = format!("{stem}-{n}.svg");
+            n += 1;
+        }
+        table.chart = Some(name.clone());
+        charts.push((name, chart.to_svg()));
+    }
+    charts
+}
+
+/// Lower-case ASCII letters and digits, runs of anything else as one `-`.
+fn slug(text: &str) -> String {
+    let mut out = String::new();
+    for c in text.chars() {
+        if c.is_ascii_alphanumeric() {
+            out.push(c.to_ascii_lowercase());
+        } else if !out.is_empty() && !out.ends_with('-') {
+            out.push('-');
+        }
+    }
+    out.trim_end_matches('-').to_owned()
 }
 
 fn render_texture(options: &Options, section: &Section) -> String {
@@ -341,6 +462,12 @@ fn render_index(options: &Options, sections: &[Section], pages: &[&Section]) -> 
         "| [shading.md](shading.md) | speed vs error of the shading frequencies (flat, Gouraud, \
          Phong, the H-test hybrid, fast Phong) and of normal interpolation |\n"
     );
+    let _ = writeln!(
+        out,
+        "Under every table with an error measure, a chart (`*.svg` next to the pages) plots each \
+         method's time against its error, both on log scales; zero errors sit in a band marked \
+         \"0 (exact)\", infinite or NaN ones in a band marked \"∞ / NaN\".\n"
+    );
     let _ = writeln!(out, "## Headlines (this run)\n");
     for section in sections.iter().chain(pages.iter().copied()) {
         for line in section.headlines() {
@@ -348,4 +475,98 @@ fn render_index(options: &Options, sections: &[Section], pages: &[&Section]) -> 
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(method: &str, ns: f64, abs_max: f64) -> Row {
+        Row {
+            method: method.to_owned(),
+            ns,
+            abs: Some(ErrorStats {
+                max: abs_max,
+                median: abs_max,
+            }),
+            ..Row::default()
+        }
+    }
+
+    #[test]
+    fn slugs_are_lower_case_ascii_words() {
+        assert_eq!(slug("2D barycentric"), "2d-barycentric");
+        assert_eq!(
+            slug("shading frequencies on a 16×8 sphere"),
+            "shading-frequencies-on-a-16-8-sphere"
+        );
+        assert_eq!(slug("Planar::xz: Jacobian"), "planar-xz-jacobian");
+        assert_eq!(slug("  (peer) "), "peer");
+    }
+
+    #[test]
+    fn charts_are_attached_and_linked_from_the_tables() {
+        let mut section = Section {
+            heading: "2D barycentric".to_owned(),
+            tables: vec![
+                Table {
+                    title: "random [well] shaped".to_owned(),
+                    rows: vec![
+                        row("naive", 4.5, 1.3e-6),
+                        Row {
+                            is_default: true,
+                            ..row("barycentric_2d", 20.0, 6e-8)
+                        },
+                        row("robust::orient2d (peer, f32 → f64)", 3.0, 0.0),
+                    ],
+                    ..Table::default()
+                },
+                // One row: no chart.
+                Table {
+                    title: "single".to_owned(),
+                    rows: vec![row("naive", 4.5, 1.3e-6)],
+                    ..Table::default()
+                },
+                // Same slug as the first: a distinct file.
+                Table {
+                    title: "random well shaped".to_owned(),
+                    rows: vec![row("a", 1.0, 1.0), row("b", 2.0, 0.5)],
+                    ..Table::default()
+                },
+            ],
+            ..Section::default()
+        };
+        for table in &mut section.tables {
+            table.mark_pareto();
+        }
+        let charts = attach_charts("interp-2d-barycentric", &mut section);
+        let names: Vec<&str> = charts.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(
+            names,
+            [
+                "interp-2d-barycentric-random-well-shaped.svg",
+                "interp-2d-barycentric-random-well-shaped-2.svg"
+            ]
+        );
+        assert_eq!(section.tables[1].chart, None);
+        let svg = &charts[0].1;
+        assert!(svg.contains("barycentric_2d (default)"));
+        assert!(svg.contains("class=\"point peer\""));
+        assert!(svg.contains(">0 (exact)</text>"));
+        let mut page = String::new();
+        section.render(&mut page);
+        assert!(
+            page.contains(
+                "![Speed vs error, random well shaped: one point per method, time and error on \
+                 log scales](interp-2d-barycentric-random-well-shaped.svg)"
+            ),
+            "{page}"
+        );
+        assert!(page.contains("(interp-2d-barycentric-random-well-shaped-2.svg)"));
+        // The link comes after the table and before the next table's heading.
+        let link = page.find("](interp-2d-barycentric-random-well-shaped.svg)");
+        let last_row = page.find("| robust::orient2d");
+        let next = page.find("### single");
+        assert!(last_row < link && link < next, "{page}");
+    }
 }

@@ -149,6 +149,8 @@ fn perspective_table(settings: Settings, runs: usize) -> Table {
         ),
         inputs: pixels,
         rows,
+        time_unit: "pixel".to_owned(),
+        error_label: "max |Δuv| (texels)".to_owned(),
         ..Table::default()
     }
 }
@@ -335,6 +337,8 @@ fn anti_aliasing_table(settings: Settings, runs: usize) -> (Table, String) {
         ),
         inputs: edge_pixels,
         rows,
+        time_unit: "pixel".to_owned(),
+        error_label: "max |pixel − reference| (linear light)".to_owned(),
         ..Table::default()
     };
     (

@@ -198,6 +198,8 @@ fn frequencies_table(mesh: &Mesh, label: &str, size: u32, runs: usize) -> (Table
         ),
         inputs: pixels,
         rows,
+        time_unit: "frame".to_owned(),
+        error_label: "max |pixel − reference| (linear light)".to_owned(),
         ..Table::default()
     };
     let note = format!(
@@ -309,6 +311,7 @@ fn normals_table(settings: Settings) -> Table {
             &names,
             &matrix,
         )],
+        error_label: "max angle error (rad)".to_owned(),
         ..Table::default()
     }
 }

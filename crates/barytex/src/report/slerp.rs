@@ -108,6 +108,7 @@ fn quaternion_table(settings: Settings) -> Table {
                       f32 inputs (radians). Bar: the method's enforced `angle_bound`."
             .to_owned(),
         inputs: inputs.len(),
+        error_label: "max angle error (rad)".to_owned(),
         ..Table::default()
     };
     let mut extra = Vec::new();
@@ -186,6 +187,7 @@ fn vector_table(settings: Settings) -> Table {
                       error: angle to an f64 SLERP of the same inputs (radians)."
             .to_owned(),
         inputs: inputs.len(),
+        error_label: "max angle error (rad)".to_owned(),
         ..Table::default()
     };
     let mut extra = Vec::new();

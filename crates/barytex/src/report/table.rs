@@ -2,6 +2,7 @@
 
 use std::fmt::Write as _;
 
+use super::chart::{Point, ScatterChart};
 use crate::timing::median;
 
 /// Maximum and median of per-input errors (a NaN error counts as infinite).
@@ -92,6 +93,13 @@ pub(crate) struct Table {
     pub(crate) rows: Vec<Row>,
     /// Markdown appended after the table (per-case breakdowns).
     pub(crate) extra: Vec<String>,
+    /// What one timing is per, for the chart's x axis ("pixel", "frame"…); empty: "call".
+    pub(crate) time_unit: String,
+    /// The chart's y-axis label, with its unit; empty: "max abs error" or "wrong signs
+    /// (count)", whichever the table's error measure is.
+    pub(crate) error_label: String,
+    /// The file name of this table's speed-vs-error chart, set when the report writes one.
+    pub(crate) chart: Option<String>,
 }
 
 impl Table {
@@ -109,6 +117,53 @@ impl Table {
                 .enumerate()
                 .any(|(j, &(tj, ej))| j != i && tj <= t && ej <= e && (tj < t || ej < e));
         }
+    }
+
+    /// This table's speed-vs-error chart (x: time, y: the error the Pareto front uses), or
+    /// `None` when the table has no error measure or fewer than two rows.
+    pub(crate) fn scatter_chart(&self, family: &str) -> Option<ScatterChart> {
+        let has_abs = self.rows.iter().any(|r| r.abs.is_some());
+        let has_signs = self.rows.iter().any(|r| r.wrong_signs.is_some());
+        if self.rows.len() < 2 || !(has_abs || has_signs) {
+            return None;
+        }
+        let y_label = if !self.error_label.is_empty() {
+            self.error_label.clone()
+        } else if has_abs {
+            "max abs error".to_owned()
+        } else {
+            "wrong signs (count)".to_owned()
+        };
+        let unit = if self.time_unit.is_empty() {
+            "call"
+        } else {
+            &self.time_unit
+        };
+        let points = self
+            .rows
+            .iter()
+            .map(|row| {
+                let mut label = row.method.replace('`', "");
+                if row.is_default {
+                    label.push_str(" (default)");
+                }
+                Point {
+                    label,
+                    x: row.ns,
+                    y: row.primary_error(),
+                    peer: is_peer(&row.method),
+                    highlight: row.is_default,
+                    pareto: row.pareto,
+                }
+            })
+            .collect();
+        Some(ScatterChart {
+            title: format!("{family}: {}", self.title),
+            x_label: format!("time per {unit} (ns)"),
+            y_label,
+            points,
+            notes: Vec::new(),
+        })
     }
 
     fn default_row(&self) -> Option<&Row> {
@@ -194,6 +249,18 @@ impl Table {
             let _ = writeln!(out, "| {} |", cells.join(" | "));
         }
         let _ = writeln!(out);
+        if let Some(file) = &self.chart {
+            let title: String = self
+                .title
+                .chars()
+                .filter(|c| !matches!(c, '[' | ']'))
+                .collect();
+            let _ = writeln!(
+                out,
+                "![Speed vs error, {title}: one point per method, time and error on log scales]\
+                 ({file})\n"
+            );
+        }
         for extra in &self.extra {
             let _ = writeln!(out, "{extra}\n");
         }
@@ -284,6 +351,11 @@ pub(crate) fn per_case_matrix(
     }
     out.truncate(out.trim_end().len());
     out
+}
+
+/// Whether a method is a peer's (another library, or a port of one), from its name.
+fn is_peer(method: &str) -> bool {
+    method.contains("(peer") || method.starts_with("reference::")
 }
 
 fn nan_to_inf(x: f64) -> f64 {

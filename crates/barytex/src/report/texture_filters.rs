@@ -349,6 +349,8 @@ pub(crate) fn run(
             ),
             inputs: scene.lookups.len(),
             rows,
+            time_unit: "lookup".to_owned(),
+            error_label: "max |filter − reference| (linear light)".to_owned(),
             ..Table::default()
         });
     }

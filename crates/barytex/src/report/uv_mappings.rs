@@ -83,6 +83,7 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
                 ns_per_call(&pts, settings.timing, |(p, n)| m.uv(p, n))
             ),
             inputs: pts.len(),
+            error_label: "max relative error of the Jacobian".to_owned(),
             ..Table::default()
         };
         table.rows.push(Row {
