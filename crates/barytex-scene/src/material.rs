@@ -39,13 +39,30 @@ pub struct TextureRef {
     pub transform: Mat3,
 }
 
-/// The `KHR_texture_transform` matrix: `translation · rotation · scale`, written column by column
-/// exactly as the extension's GLSL.
+/// The `KHR_texture_transform` matrix: `translation · rotation · scale`, with
+/// `u′ = cos·u + sin·v`, `v′ = −sin·u + cos·v` for the rotation.
+///
+/// That is the direction the extension's prose and example fix: its example (offset `[0, 1]`,
+/// rotation π/2, scale ½) must land on the image's lower-left quadrant, and the sample model
+/// TextureTransformTest shows a red marker when the rotation turns the other way. The GLSL
+/// snippet in the extension's README, read as column-major, turns the other way (a known slip
+/// in that snippet; three.js, Babylon.js and the sample viewer agree with the example).
+///
+/// ```
+/// use barytex_scene::material::texture_transform_matrix;
+/// use glam::{Vec2, Vec3};
+///
+/// // The extension's example: the lower-left quadrant, rotated.
+/// let m = texture_transform_matrix(Vec2::new(0.0, 1.0), std::f32::consts::FRAC_PI_2, Vec2::splat(0.5));
+/// let corner = |u: f32, v: f32| (m * Vec3::new(u, v, 1.0)).truncate();
+/// assert!(corner(1.0, 0.0).distance(Vec2::new(0.0, 0.5)) < 1e-6);
+/// assert!(corner(1.0, 1.0).distance(Vec2::new(0.5, 0.5)) < 1e-6);
+/// ```
 #[must_use]
 pub fn texture_transform_matrix(offset: Vec2, rotation: f32, scale: Vec2) -> Mat3 {
     let (s, c) = rotation.sin_cos();
     let translation = Mat3::from_cols(Vec3::X, Vec3::Y, Vec3::new(offset.x, offset.y, 1.0));
-    let rotation = Mat3::from_cols(Vec3::new(c, s, 0.0), Vec3::new(-s, c, 0.0), Vec3::Z);
+    let rotation = Mat3::from_cols(Vec3::new(c, -s, 0.0), Vec3::new(s, c, 0.0), Vec3::Z);
     let scale = Mat3::from_diagonal(Vec3::new(scale.x, scale.y, 1.0));
     translation * rotation * scale
 }
@@ -346,6 +363,19 @@ mod tests {
         assert!((uv.x - 2.5).abs() < 1e-6 && (uv.y - 3.25).abs() < 1e-6);
         let r = texture_transform_matrix(Vec2::ZERO, std::f32::consts::FRAC_PI_2, Vec2::ONE);
         let uv = r * Vec3::new(1.0, 0.0, 1.0);
-        assert!(uv.x.abs() < 1e-6 && (uv.y - 1.0).abs() < 1e-6);
+        assert!(uv.x.abs() < 1e-6 && (uv.y + 1.0).abs() < 1e-6);
+        // The extension's example maps the unit square onto the lower-left quadrant.
+        let example = texture_transform_matrix(
+            Vec2::new(0.0, 1.0),
+            std::f32::consts::FRAC_PI_2,
+            Vec2::splat(0.5),
+        );
+        for (u, v) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0), (0.5, 0.5)] {
+            let t = example * Vec3::new(u, v, 1.0);
+            assert!(
+                (-1e-6..=0.5 + 1e-6).contains(&t.x) && (0.5 - 1e-6..=1.0 + 1e-6).contains(&t.y),
+                "({u}, {v}) → {t}"
+            );
+        }
     }
 }

@@ -95,7 +95,7 @@ fn texture_transforms_become_matrices() {
     ));
     let rotation = by_name("Rotation");
     let r = std::f32::consts::FRAC_PI_8; // the file's 0.39269908169872414
-    assert!(close(rotation * Vec3::X, Vec3::new(r.cos(), r.sin(), 0.0)));
+    assert!(close(rotation * Vec3::X, Vec3::new(r.cos(), -r.sin(), 0.0)));
     assert_ne!(by_name("All"), Mat3::IDENTITY);
     assert!(s.stats.images_decoded > 0);
 }

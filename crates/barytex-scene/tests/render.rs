@@ -317,6 +317,53 @@ fn close(a: [u8; 4], b: [u8; 4], steps: u8) -> bool {
     a.iter().zip(&b).all(|(p, q)| p.abs_diff(*q) <= steps)
 }
 
+/// TextureTransformTest's rotation quad (bottom left): the arrow must end at the green marker,
+/// not at the red one, which the model places where a rotation in the wrong direction points.
+#[test]
+fn texture_transform_test_rotates_toward_the_green_marker() {
+    let Some(scene) = load("TextureTransformTest/glTF/TextureTransformTest.gltf") else {
+        return;
+    };
+    let (w, h) = (600_u32, 400_u32);
+    let options = RenderOptions {
+        shading: Shading::Unlit,
+        ..small(w, h)
+    };
+    let pixels = srgb(&options, &scene);
+    // The bottom-left quad and its markers: the left 42 % of the image, its lower half.
+    let region = |x: u32, y: u32| x < w * 42 / 100 && y >= h / 2;
+    let (mut green, mut red, mut black) = (Vec::new(), Vec::new(), Vec::new());
+    for y in 0..h {
+        for x in 0..w {
+            let [r, g, b, _] = at(&pixels, w, x, y);
+            let p = glam::Vec2::new(x as f32, y as f32);
+            if !region(x, y) {
+                continue;
+            }
+            if g > 150 && r < 80 && b < 80 {
+                green.push(p);
+            } else if r > 150 && g < 60 && b < 60 {
+                red.push(p);
+            } else if r < 40 && g < 40 && b < 40 {
+                black.push(p);
+            }
+        }
+    }
+    assert!(!green.is_empty() && !red.is_empty() && !black.is_empty());
+    let centroid = |ps: &[glam::Vec2]| ps.iter().sum::<glam::Vec2>() / ps.len() as f32;
+    let nearest = |c: glam::Vec2| {
+        black
+            .iter()
+            .map(|p| p.distance(c))
+            .fold(f32::INFINITY, f32::min)
+    };
+    let (to_green, to_red) = (nearest(centroid(&green)), nearest(centroid(&red)));
+    assert!(
+        to_red > 3.0 * to_green,
+        "arrow to green marker {to_green} px, to red {to_red} px"
+    );
+}
+
 /// TextureLinearInterpolationTest: the emissive factor 0.5 and the texture interpolated halfway
 /// between black and white (in linear light, after sRGB decoding) give the same green, 188.
 #[test]
