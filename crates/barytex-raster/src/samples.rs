@@ -164,7 +164,10 @@ impl SamplePattern {
     /// The sample offsets of pixel (0, 0) from its top-left corner, each in `[0, 1)²` (for a
     /// jittered pattern, the positions one pass of
     /// [`render_supersampled`](crate::render_supersampled) uses for every pixel). Grids are
-    /// limited to [`MAX_GRID`] × [`MAX_GRID`]: a larger `n` gives that many.
+    /// limited to [`MAX_GRID`] × [`MAX_GRID`]: a larger `n` gives that many. A `Standard` count
+    /// other than 1, 2, 4, 8 or 16 (which [`validate`](Self::validate) refuses) gives the one
+    /// centre sample, as [`sample_offset`](Self::sample_offset) places it (it used to give
+    /// `count` copies of the centre: 4 G of them for `u32::MAX`).
     #[must_use]
     pub fn offsets(self) -> Vec<Vec2> {
         let this = match self {
@@ -173,6 +176,9 @@ impl SamplePattern {
                 n: n.min(MAX_GRID),
                 seed,
             },
+            Self::Standard { count } if !matches!(count, 1 | 2 | 4 | 8 | 16) => {
+                Self::Standard { count: 1 }
+            }
             standard => standard,
         };
         match this {

@@ -54,6 +54,13 @@ pub enum Blend {
 }
 
 /// The screen rectangle that normalized device coordinates map onto, and the depth range.
+///
+/// Nothing is checked, and nothing panics: a NaN or infinite field, or one that puts a vertex
+/// beyond [`MAX_COORDINATE`](crate::MAX_COORDINATE) pixels (a huge width, a far-off origin),
+/// makes the triangle `degenerate` in [`DrawStats`](crate::DrawStats) (dropped); a zero width or
+/// height too (zero area); a negative width or height gives an empty rectangle
+/// `[x, x + width)`, so nothing is written; a NaN depth range gives NaN fragment depths, which
+/// fail every depth test but `NotEqual` and `Always`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Viewport {
     /// Left edge in pixels.

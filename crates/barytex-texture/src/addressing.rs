@@ -70,8 +70,8 @@ pub fn linear_taps(u: f32, size: u32) -> LinearTaps {
 }
 
 /// Applies an address mode to an integer texel index; `None` means "read the border colour"
-/// ([`AddressMode::ClampToBorder`] outside `[0, size)`). `size` must be at least 1 (every texture
-/// side is).
+/// ([`AddressMode::ClampToBorder`] outside `[0, size)`). Every texture side is at least 1; a
+/// `size` of 0 is treated as 1.
 #[must_use]
 #[inline]
 pub fn wrap(i: i64, size: u32, mode: AddressMode) -> Option<u32> {

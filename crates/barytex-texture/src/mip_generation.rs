@@ -52,9 +52,11 @@ pub struct MipOptions {
     pub color_space: MipColorSpace,
     /// `Some(reference)`: scale each level's alpha so the fraction of texels with alpha ≥
     /// `reference` is the base level's (Castaño, "Computing Alpha Mipmaps", 2010) — keeps
-    /// alpha-tested foliage from thinning out in the distance.
+    /// alpha-tested foliage from thinning out in the distance. A NaN or infinite reference is
+    /// ignored (as `None`).
     pub alpha_coverage: Option<f32>,
-    /// Stop after this many levels (base included); `None` = down to 1×1.
+    /// Stop after this many levels (base included); `None` = down to 1×1. `Some(0)` is read as
+    /// `Some(1)` (the base alone); more than a complete chain gives the complete chain.
     pub max_levels: Option<usize>,
 }
 

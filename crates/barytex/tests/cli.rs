@@ -299,3 +299,216 @@ fn huge_claims_are_refused_under_a_memory_limit() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// One lit triangle in the z = 0 plane (positions in an embedded buffer), as glTF JSON.
+fn triangle_gltf() -> String {
+    let mut bytes = Vec::new();
+    for v in [0.0_f32, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0] {
+        bytes.extend_from_slice(&v.to_le_bytes());
+    }
+    // Base64 by hand (no dependency): 36 bytes, a multiple of 3, so no padding.
+    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let data: String = bytes
+        .chunks(3)
+        .flat_map(|c| {
+            let n = u32::from(c[0]) << 16 | u32::from(c[1]) << 8 | u32::from(c[2]);
+            [18, 12, 6, 0].map(|s| ALPHABET[(n >> s & 63) as usize] as char)
+        })
+        .collect();
+    format!(
+        r#"{{"asset":{{"version":"2.0"}},
+            "buffers":[{{"byteLength":36,"uri":"data:application/octet-stream;base64,{data}"}}],
+            "bufferViews":[{{"buffer":0,"byteLength":36}}],
+            "accessors":[{{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}}],
+            "meshes":[{{"primitives":[{{"attributes":{{"POSITION":0}}}}]}}],
+            "nodes":[{{"mesh":0}}],"scenes":[{{"nodes":[0]}}]}}"#
+    )
+}
+
+/// Runs `barytex` with `args`; asserts it fails with exactly one line on stderr, `barytex: …`
+/// containing `expect`, and no panic. Returns that line.
+#[track_caller]
+fn refused(args: &[&std::ffi::OsStr], expect: &str) -> String {
+    let output = barytex().args(args).output().unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr).into_owned();
+    assert!(!output.status.success(), "{args:?} should fail: {output:?}");
+    assert_eq!(output.status.code(), Some(1), "{args:?}: {stderr}");
+    assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
+    let lines: Vec<&str> = stderr.lines().collect();
+    assert_eq!(lines.len(), 1, "{args:?}: one line expected: {stderr}");
+    assert!(
+        lines[0].starts_with("barytex: ") && lines[0].contains(expect),
+        "{args:?}: expected `barytex: …{expect}…`, got {stderr}"
+    );
+    lines[0].to_owned()
+}
+
+/// `--threads 0` means all cores (rayon's default), not an error and not a panic.
+#[test]
+fn render_threads_zero_means_all_cores() {
+    let dir = temp_dir("threads-zero");
+    std::fs::create_dir_all(&dir).unwrap();
+    let gltf = dir.join("triangle.gltf");
+    std::fs::write(&gltf, triangle_gltf()).unwrap();
+    let out = dir.join("out.png");
+    let output = barytex()
+        .arg("render")
+        .arg(&gltf)
+        .args(["--size", "32x24", "--threads", "0", "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(output.status.success(), "{output:?}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    let threads: usize = stdout
+        .split(" on ")
+        .nth(1)
+        .and_then(|s| s.split(' ').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("no thread count in {stdout}"));
+    assert!(threads >= 1, "{stdout}");
+    assert!(out.is_file());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A missing file, a file that is not glTF, a scene index out of range and an output that
+/// cannot be written: each a one-line `barytex: …` error, exit status 1, no panic.
+#[test]
+fn render_refuses_bad_files_scenes_and_outputs() {
+    let dir = temp_dir("render-bad");
+    std::fs::create_dir_all(&dir).unwrap();
+    let gltf = dir.join("triangle.gltf");
+    std::fs::write(&gltf, triangle_gltf()).unwrap();
+    let out = dir.join("out.png");
+    let os = |s: &'static str| std::ffi::OsStr::new(s);
+    let size = [os("--size"), os("16x12")];
+
+    let missing = dir.join("no-such-file.gltf");
+    let line = refused(
+        &[
+            os("render"),
+            missing.as_os_str(),
+            size[0],
+            size[1],
+            os("-o"),
+            out.as_os_str(),
+        ],
+        "no-such-file.gltf",
+    );
+    assert!(line.contains("cannot read"), "{line}");
+
+    let text = dir.join("notes.gltf");
+    std::fs::write(&text, "these are not the droids you are looking for\n").unwrap();
+    refused(
+        &[
+            os("render"),
+            text.as_os_str(),
+            size[0],
+            size[1],
+            os("-o"),
+            out.as_os_str(),
+        ],
+        "JSON",
+    );
+    let binary = dir.join("noise.glb");
+    std::fs::write(&binary, [0x7f_u8, b'E', b'L', b'F', 2, 1, 1, 0, 0, 0, 0, 0]).unwrap();
+    refused(
+        &[
+            os("render"),
+            binary.as_os_str(),
+            size[0],
+            size[1],
+            os("-o"),
+            out.as_os_str(),
+        ],
+        "",
+    );
+
+    refused(
+        &[
+            os("render"),
+            gltf.as_os_str(),
+            os("--scene"),
+            os("5"),
+            size[0],
+            size[1],
+            os("-o"),
+            out.as_os_str(),
+        ],
+        "scene",
+    );
+
+    // The output's folder is a regular file: it cannot be created.
+    let blocker = dir.join("blocker");
+    std::fs::write(&blocker, "a file, not a folder").unwrap();
+    let under_file = blocker.join("out.png");
+    refused(
+        &[
+            os("render"),
+            gltf.as_os_str(),
+            size[0],
+            size[1],
+            os("-o"),
+            under_file.as_os_str(),
+        ],
+        "cannot create",
+    );
+    // The output is a folder.
+    refused(
+        &[
+            os("render"),
+            gltf.as_os_str(),
+            size[0],
+            size[1],
+            os("-o"),
+            dir.as_os_str(),
+        ],
+        "cannot write",
+    );
+    // A missing folder is created, not refused.
+    let nested = dir.join("new/deeper/out.png");
+    let output = barytex()
+        .arg("render")
+        .arg(&gltf)
+        .args(["--size", "16x12", "-o"])
+        .arg(&nested)
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{output:?}");
+    assert!(nested.is_file());
+    // The good file with a good output renders (so the refusals above are about what they change).
+    let output = barytex()
+        .arg("render")
+        .arg(&gltf)
+        .args(["--size", "16x12", "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{output:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `uv-layout --size` above 8192 is refused before anything that size is allocated.
+#[test]
+fn uv_layout_refuses_sizes_above_8192() {
+    let dir = temp_dir("uv-layout-huge");
+    let out = dir.join("never.png");
+    let os = std::ffi::OsStr::new;
+    let line = refused(
+        &[
+            os("uv-layout"),
+            os("--mesh"),
+            os("sphere"),
+            os("--size"),
+            os("9000"),
+            os("--out"),
+            out.as_os_str(),
+        ],
+        "8192",
+    );
+    assert!(line.contains("9000"), "{line}");
+    assert!(!out.exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}

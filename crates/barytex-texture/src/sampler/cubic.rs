@@ -14,7 +14,7 @@ impl CubicKernel {
         }
     }
 
-    /// The kernel value at distance `x` (in texels); zero for `|x| ≥ 2`.
+    /// The kernel value at distance `x` (in texels); zero for `|x| ≥ 2` and for a NaN `x`.
     #[must_use]
     pub fn weight(self, x: f32) -> f32 {
         let (b, c) = self.b_c();
@@ -36,9 +36,12 @@ impl CubicKernel {
     }
 
     /// The four tap weights for a sample at fraction `t ∈ [0, 1)` past tap 1 (taps at −1, 0, 1, 2),
-    /// normalised to sum to 1.
+    /// normalised to sum to 1. A `t` outside `[0, 1]` is clamped into it and NaN is read as 0, so
+    /// the weights always sum to 1 (they were all NaN for a NaN or infinite `t`, and a far-off
+    /// `t` divided by a zero sum).
     #[must_use]
     pub fn taps(self, t: f32) -> [f32; 4] {
+        let t = if t.is_nan() { 0.0 } else { t.clamp(0.0, 1.0) };
         let w = [
             self.weight(t + 1.0),
             self.weight(t),

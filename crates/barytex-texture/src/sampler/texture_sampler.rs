@@ -31,7 +31,13 @@ use crate::{MipChain, Texel, Texture2d};
 /// - a non-finite `uv` gives transparent black `(0, 0, 0, 0)`;
 /// - a zero footprint magnifies (level 0, `mag_filter`); a NaN or infinite derivative is treated
 ///   as an unmeasurably large footprint: the most blurred level the clamps allow;
-/// - a level of detail beyond the chain uses its last level.
+/// - a level of detail beyond the chain uses its last level;
+/// - texels are not checked, but a NaN or infinite texel (possible in float formats) never
+///   makes the result NaN: filtering runs on premultiplied colour and un-premultiplies at the
+///   end, where a non-finite colour becomes black with the filtered alpha, a NaN or
+///   non-positive alpha gives transparent black, and a +∞ alpha stays +∞ (with black colour).
+///   Texels outside the filter's footprint have no effect (but a generated mip chain averages
+///   such a texel into its coarser levels).
 ///
 /// # Accuracy
 /// Texel indices and weights are those of the Vulkan formulas evaluated exactly (f64), each
