@@ -96,7 +96,7 @@ fn run_mesh(
     let picture = draw_uv_layout(&mesh, size, &LayoutOptions::default())?;
     let out = out.unwrap_or_else(|| PathBuf::from(format!("docs/uv-layout/{}.png", kind.name())));
     if let Some(parent) = out.parent().filter(|p| !p.as_os_str().is_empty()) {
-        std::fs::create_dir_all(parent)?;
+        std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
     }
     write_png(&picture, &out)?;
     println!(

@@ -104,8 +104,20 @@ fn bad_uv_layout_input_is_an_error_not_a_panic() {
     std::fs::create_dir_all(&dir).unwrap();
     let not_gltf = dir.join("not.gltf");
     std::fs::write(&not_gltf, b"{ this is not json").unwrap();
+    // A regular file where an output folder should be.
+    let blocker = dir.join("blocker");
+    std::fs::write(&blocker, b"").unwrap();
+    let under_blocker = blocker.join("out");
     let cases: Vec<Vec<std::ffi::OsString>> = vec![
         vec!["uv-layout".into()],
+        vec!["uv-layout".into(), "--mesh".into(), "teapot".into()],
+        vec![
+            "uv-layout".into(),
+            "--mesh".into(),
+            "plane".into(),
+            "-o".into(),
+            under_blocker.join("plane.png").into(),
+        ],
         vec!["uv-layout".into(), dir.join("missing.gltf").into()],
         vec!["uv-layout".into(), not_gltf.clone().into()],
         vec![
@@ -121,6 +133,24 @@ fn bad_uv_layout_input_is_an_error_not_a_panic() {
         assert!(!output.status.success(), "{args:?} succeeded");
         assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
         assert!(!stderr.trim().is_empty(), "{args:?}: no message");
+    }
+    if let Some(file) = fixture("Avocado/glTF/Avocado.gltf") {
+        let output = barytex()
+            .arg("uv-layout")
+            .arg(file)
+            .arg("-o")
+            .arg(&under_blocker)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            !output.status.success() && !stderr.contains("panicked"),
+            "{stderr}"
+        );
+        assert!(
+            stderr.contains("blocker"),
+            "the message names the folder: {stderr}"
+        );
     }
 }
 
