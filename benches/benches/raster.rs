@@ -31,15 +31,9 @@ fn config() -> Criterion {
 
 fn torus_scene() -> ClipMesh {
     let mesh = barytex_uv::mesh::torus(96, 32, 1.0, 0.4).expect("valid torus");
-    // Vulkan-style perspective (z in [0, 1]), 50° vertical field of view, square image.
-    let f = 1.0 / (25_f32.to_radians()).tan();
-    let (near, far) = (0.1_f32, 100.0_f32);
-    let projection = Mat4::from_cols(
-        Vec4::new(f, 0.0, 0.0, 0.0),
-        Vec4::new(0.0, f, 0.0, 0.0),
-        Vec4::new(0.0, 0.0, far / (near - far), -1.0),
-        Vec4::new(0.0, 0.0, near * far / (near - far), 0.0),
-    );
+    // Depth in [0, w], y up (glam's DirectX convention), 50° vertical field of view, square image.
+    let projection =
+        glam::camera::rh::proj::directx::perspective(50_f32.to_radians(), 1.0, 0.1, 100.0);
     // Seen from 45° above, 3.1 units away.
     let view = Mat4::from_translation(Vec3::new(0.0, 0.0, -3.1))
         * Mat4::from_rotation_x(45_f32.to_radians());

@@ -292,14 +292,9 @@ fn affine_spans_trade_error_for_fewer_divisions() {
     // Vulkan-style perspective, 60° vertical, looking down −z at the slanted plane
     // x + y = −1.2 (depth varies along rows and columns: on a level floor every row has one
     // depth and spans would be exact), u = −z/40.
-    let f = 1.0 / 30_f32.to_radians().tan();
-    let (near, far) = (0.1_f32, 100.0_f32);
-    let projection = Mat4::from_cols(
-        Vec4::new(f, 0.0, 0.0, 0.0),
-        Vec4::new(0.0, f, 0.0, 0.0),
-        Vec4::new(0.0, 0.0, far / (near - far), -1.0),
-        Vec4::new(0.0, 0.0, near * far / (near - far), 0.0),
-    );
+    // glam's DirectX-convention perspective (y up, depth in [0, w]), as the rasterizer takes it.
+    let projection =
+        glam::camera::rh::proj::directx::perspective(60_f32.to_radians(), 1.0, 0.1, 100.0);
     let shader = Ground { mvp: projection };
     let on_plane = |s: f32, z: f32| {
         (

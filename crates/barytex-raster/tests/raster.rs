@@ -183,15 +183,10 @@ impl Shader for PlaneUv {
     }
 }
 
-/// Vulkan-style perspective (z in [0, 1], y up in clip space), looking down −z.
+/// Perspective with depth in [0, 1] and y up in clip space, looking down −z: glam's right-handed
+/// DirectX-convention `perspective`.
 fn perspective(fov_y: f32, aspect: f32, near: f32, far: f32) -> Mat4 {
-    let f = 1.0 / (fov_y / 2.0).tan();
-    Mat4::from_cols(
-        Vec4::new(f / aspect, 0.0, 0.0, 0.0),
-        Vec4::new(0.0, f, 0.0, 0.0),
-        Vec4::new(0.0, 0.0, far / (near - far), -1.0),
-        Vec4::new(0.0, 0.0, near * far / (near - far), 0.0),
-    )
+    glam::camera::rh::proj::directx::perspective(fov_y, aspect, near, far)
 }
 
 fn ground_plane() -> (Vec<(Vec3, Vec2)>, Vec<u32>) {

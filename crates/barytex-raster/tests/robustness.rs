@@ -444,13 +444,12 @@ impl Shader for PlaneUv {
 }
 
 fn plane_scene(w: u32, h: u32) -> (PlaneUv, Vec<(Vec3, Vec2)>, Vec<u32>) {
-    let (fov, aspect, near, far) = (60_f32.to_radians(), w as f32 / h as f32, 0.1, 100.0);
-    let f = 1.0 / (fov / 2.0).tan();
-    let view_projection = Mat4::from_cols(
-        Vec4::new(f / aspect, 0.0, 0.0, 0.0),
-        Vec4::new(0.0, f, 0.0, 0.0),
-        Vec4::new(0.0, 0.0, far / (near - far), -1.0),
-        Vec4::new(0.0, 0.0, near * far / (near - far), 0.0),
+    // glam's DirectX-convention perspective (y up, depth in [0, w]), as the rasterizer takes it.
+    let view_projection = glam::camera::rh::proj::directx::perspective(
+        60_f32.to_radians(),
+        w as f32 / h as f32,
+        0.1,
+        100.0,
     );
     // A wall slanted in x and y, so depth varies along rows and columns.
     let corners = [(-4.0, -3.0), (4.0, -3.0), (4.0, 3.0), (-4.0, 3.0)];

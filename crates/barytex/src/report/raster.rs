@@ -16,17 +16,6 @@ use crate::timing::median_frame_seconds;
 /// Texels per unit of uv in the perspective family (a 256² texture).
 const TEXELS: f64 = 256.0;
 
-/// Vulkan-style perspective projection (z in [0, 1], y up in clip space).
-fn perspective(fov_y: f32, aspect: f32, near: f32, far: f32) -> Mat4 {
-    let f = 1.0 / (fov_y / 2.0).tan();
-    Mat4::from_cols(
-        Vec4::new(f / aspect, 0.0, 0.0, 0.0),
-        Vec4::new(0.0, f, 0.0, 0.0),
-        Vec4::new(0.0, 0.0, far / (near - far), -1.0),
-        Vec4::new(0.0, 0.0, near * far / (near - far), 0.0),
-    )
-}
-
 /// World-space vertices with uv, drawn as the uv itself (so the image is the interpolation).
 struct UvShader {
     mvp: Mat4,
@@ -53,7 +42,7 @@ fn perspective_table(settings: Settings, runs: usize) -> Table {
     let fov = 60_f32.to_radians();
     let aspect = w as f32 / h as f32;
     let shader = UvShader {
-        mvp: perspective(fov, aspect, 0.1, 400.0),
+        mvp: barytex_shade::camera::perspective(fov, aspect, 0.1, 400.0),
     };
     let (s_max, z_near, z_far) = (200.0_f32, -0.5_f32, -100.0_f32);
     let r = std::f32::consts::FRAC_1_SQRT_2;
