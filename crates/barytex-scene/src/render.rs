@@ -380,8 +380,32 @@ fn highlight_scene(
 /// # Errors
 /// A zero or oversized image, an invalid sample count, a camera index beyond the scene's, a
 /// scene with nothing to frame, or a texture that cannot be prepared.
-#[allow(clippy::too_many_lines)]
 pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, RenderError> {
+    render_with_progress(scene, options, &mut |_, _| {})
+}
+
+/// The passes over the scene `anti_aliasing` plans: `n²` for accumulated supersampling (`n > 5`),
+/// at most `max(n, 4)` for adaptive sampling (it stops when every pixel has converged), else 1.
+#[must_use]
+pub fn planned_passes(anti_aliasing: AntiAliasing) -> u32 {
+    match anti_aliasing {
+        AntiAliasing::Supersample(n) | AntiAliasing::Jitter(n) if (6..=16).contains(&n) => n * n,
+        AntiAliasing::Adaptive(max) => max.max(4),
+        _ => 1,
+    }
+}
+
+/// [`render`], calling `on_pass(done, planned)` after each pass over the scene, with the
+/// [`planned_passes`] (for a progress bar; adaptive sampling may finish before `planned`).
+///
+/// # Errors
+/// As [`render`].
+#[allow(clippy::too_many_lines)]
+pub fn render_with_progress(
+    scene: &Scene,
+    options: &RenderOptions,
+    on_pass: &mut dyn FnMut(u32, u32),
+) -> Result<Rendered, RenderError> {
     let started = Instant::now();
     let (width, height) = (options.width, options.height);
     if width == 0 || height == 0 || width > 16_384 || height > 16_384 {
@@ -724,6 +748,7 @@ pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, Render
             measuring_seconds += copying.elapsed().as_secs_f64();
         }
         total += &draw_items(fb, shift, false);
+        on_pass(passes, planned_passes(options.anti_aliasing));
     };
     let limits = Limits::default();
     let background = options.background;

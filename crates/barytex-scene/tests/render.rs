@@ -236,6 +236,41 @@ fn the_demo_is_the_same_for_any_thread_count() {
     assert_eq!(run(1), run(3));
 }
 
+/// The progress callback sees every pass, numbered from 1, against the planned count:
+/// exactly `n²` for accumulated supersampling, at most the maximum for adaptive sampling, one
+/// for MSAA.
+#[test]
+fn progress_counts_every_pass() {
+    use barytex_scene::render::{planned_passes, render_with_progress};
+    let scene = barytex_scene::demo::demo_scene();
+    for anti_aliasing in [
+        AntiAliasing::Supersample(6),
+        AntiAliasing::Adaptive(8),
+        AntiAliasing::Msaa(4),
+    ] {
+        let options = RenderOptions {
+            anti_aliasing,
+            ..demo_options(32, 18)
+        };
+        let mut seen = Vec::new();
+        let out = render_with_progress(&scene, &options, &mut |done, planned| {
+            seen.push((done, planned));
+        })
+        .expect("renders");
+        let planned = planned_passes(anti_aliasing);
+        assert_eq!(seen.len() as u32, out.stats.passes, "{anti_aliasing:?}");
+        assert!(
+            seen.iter()
+                .enumerate()
+                .all(|(i, &(done, p))| done == i as u32 + 1 && p == planned && done <= planned),
+            "{anti_aliasing:?}: {seen:?}"
+        );
+        if let AntiAliasing::Supersample(n) = anti_aliasing {
+            assert_eq!(out.stats.passes, n * n);
+        }
+    }
+}
+
 /// `measure_stages` times a second, constant-shader draw of every pass into a scratch copy: the
 /// image and the counts are those of the plain render, and only the measured render reports a
 /// rasterization time. Adaptive supersampling is included: its passes depend on the image, so a

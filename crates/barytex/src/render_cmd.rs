@@ -5,7 +5,8 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use barytex_scene::render::{
-    AntiAliasing, CameraChoice, Filter, RenderOptions, RenderStats, Rendered, Shading, render,
+    AntiAliasing, CameraChoice, Filter, RenderOptions, RenderStats, Rendered, Shading,
+    render_with_progress,
 };
 use barytex_scene::{LoadOptions, Scene, load_path};
 
@@ -234,8 +235,8 @@ fn stage_line(load: f64, decode: f64, s: &RenderStats, save: f64) -> String {
     )
 }
 
-/// A spinner on standard error naming the stage at work; indicatif hides it when standard error
-/// is not a terminal (logs, pipes, tests).
+/// A spinner on standard error naming the stage at work, a bar over the passes of a multi-pass
+/// render; indicatif hides both when standard error is not a terminal (logs, pipes, tests).
 struct Progress(indicatif::ProgressBar);
 
 impl Progress {
@@ -250,6 +251,22 @@ impl Progress {
 
     fn stage(&self, what: &'static str) {
         self.0.set_message(what);
+    }
+
+    /// After pass `done` of `planned`: a bar once there is more than one pass.
+    fn passes(&self, done: u32, planned: u32) {
+        if planned <= 1 {
+            return;
+        }
+        if self.0.length() != Some(u64::from(planned)) {
+            if let Ok(style) = indicatif::ProgressStyle::with_template(
+                "{msg} [{bar:32}] pass {pos}/{len} {elapsed} (eta {eta})",
+            ) {
+                self.0.set_style(style.progress_chars("=> "));
+            }
+            self.0.set_length(u64::from(planned));
+        }
+        self.0.set_position(u64::from(done));
     }
 
     fn finish(&self) {
@@ -287,7 +304,11 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         measure_stages: options.stats,
         ..options.render
     };
-    let rendered = pool.install(|| render(&scene, &render_options))?;
+    let rendered = pool.install(|| {
+        render_with_progress(&scene, &render_options, &mut |done, planned| {
+            progress.passes(done, planned);
+        })
+    })?;
     progress.stage("writing");
     let started = Instant::now();
     let image = rendered.image.to_srgba8()?;
