@@ -2,11 +2,13 @@
 //! pattern, shared edges cover each sample once, MSAA shades once per pixel and per-sample
 //! shading once per sample, MSAA approaches exact area coverage; affine spans; the write mask.
 
+mod common;
+
 use barytex_raster::{
-    Blend, CullMode, Fragment, Framebuffer, Interpolation, PipelineState, SamplePattern, Shader,
-    draw,
+    Blend, Fragment, Framebuffer, Interpolation, PipelineState, SamplePattern, Shader, draw,
 };
 use barytex_texture::Limits;
+use common::no_depth;
 use glam::{Mat4, Vec2, Vec3, Vec4};
 use proptest::prelude::*;
 
@@ -32,15 +34,6 @@ impl Shader for Flat {
     }
     fn fragment(&self, _: &Fragment<'_, f32>) -> Option<Vec4> {
         Some(self.color)
-    }
-}
-
-fn no_depth() -> PipelineState {
-    PipelineState {
-        cull: CullMode::None,
-        depth_compare: None,
-        depth_write: false,
-        ..PipelineState::default()
     }
 }
 
@@ -116,37 +109,7 @@ proptest! {
 #[test]
 fn shared_edges_cover_every_sample_exactly_once() {
     const SIZE: u32 = 40;
-    let n = 7;
-    let mut state = 0x9E37_79B9_u64;
-    let mut next = || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 40) as f32 / (1u64 << 24) as f32 - 0.5
-    };
-    let mut vertices = Vec::new();
-    for j in 0..=n {
-        for i in 0..=n {
-            let border = i == 0 || j == 0 || i == n || j == n;
-            let jitter = if border {
-                Vec2::ZERO
-            } else {
-                Vec2::new(next(), next()) * 0.4
-            };
-            vertices.push(
-                (Vec2::new(i as f32, j as f32) + jitter) / n as f32 * (SIZE as f32 + 8.0)
-                    - Vec2::splat(4.0),
-            );
-        }
-    }
-    let mut indices = Vec::new();
-    for j in 0..n {
-        for i in 0..n {
-            let v = |a: u32, b: u32| b * (n + 1) + a;
-            indices.extend([v(i, j), v(i + 1, j), v(i + 1, j + 1)]);
-            indices.extend([v(i, j), v(i + 1, j + 1), v(i, j + 1)]);
-        }
-    }
+    let (vertices, indices) = common::jittered_grid(7, SIZE, SIZE, 0x9E37_79B9);
     for pattern in PATTERNS {
         for sample_shading in [false, true] {
             let mut fb =

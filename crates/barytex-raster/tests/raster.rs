@@ -1,12 +1,15 @@
 //! The rasterizer: watertightness and the top-left rule, perspective-correct varyings and their
 //! derivatives, near-plane clipping, robustness, determinism across thread counts.
 
+mod common;
+
 use std::sync::atomic::{AtomicU32, Ordering};
 
 use barytex_raster::{
     CullMode, DrawStats, Fragment, Framebuffer, Interpolation, PipelineState, Shader, draw,
 };
 use barytex_texture::Limits;
+use common::no_depth;
 use glam::{Mat4, Vec2, Vec3, Vec4};
 use proptest::prelude::*;
 
@@ -37,15 +40,6 @@ impl Shader for Counter {
     }
 }
 
-fn no_depth() -> PipelineState {
-    PipelineState {
-        cull: CullMode::None,
-        depth_compare: None,
-        depth_write: false,
-        ..PipelineState::default()
-    }
-}
-
 /// Screen position (pixels, y down) of a `w × h` target → clip space with w = 1.
 fn clip_of(p: Vec2, w: u32, h: u32) -> Vec4 {
     Vec4::new(
@@ -56,40 +50,10 @@ fn clip_of(p: Vec2, w: u32, h: u32) -> Vec4 {
     )
 }
 
-/// A jittered grid of `n × n` cells spanning beyond the target, two triangles per cell.
+/// [`common::jittered_grid`] in clip space.
 fn jittered_grid(n: u32, w: u32, h: u32, seed: u64) -> (Vec<Vec4>, Vec<u32>) {
-    let mut state = seed | 1;
-    let mut next = || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 40) as f32 / (1u64 << 24) as f32 - 0.5
-    };
-    let mut vertices = Vec::new();
-    for j in 0..=n {
-        for i in 0..=n {
-            let border = i == 0 || j == 0 || i == n || j == n;
-            let jitter = if border {
-                Vec2::ZERO
-            } else {
-                // ±0.2 of a cell keeps every quad convex, so no triangle folds over another.
-                Vec2::new(next(), next()) * 0.4
-            };
-            let p = (Vec2::new(i as f32, j as f32) + jitter) / n as f32
-                * Vec2::new(w as f32 + 8.0, h as f32 + 8.0)
-                - Vec2::splat(4.0);
-            vertices.push(clip_of(p, w, h));
-        }
-    }
-    let mut indices = Vec::new();
-    for j in 0..n {
-        for i in 0..n {
-            let v = |a: u32, b: u32| b * (n + 1) + a;
-            indices.extend([v(i, j), v(i + 1, j), v(i + 1, j + 1)]);
-            indices.extend([v(i, j), v(i + 1, j + 1), v(i, j + 1)]);
-        }
-    }
-    (vertices, indices)
+    let (screen, indices) = common::jittered_grid(n, w, h, seed);
+    (screen.iter().map(|&p| clip_of(p, w, h)).collect(), indices)
 }
 
 proptest! {
