@@ -484,6 +484,15 @@ pub fn render_with_progress(
         .iter()
         .flat_map(|i| i.mesh.primitives.iter().map(|p| p.material))
         .collect();
+    // The images each item's material samples, looked up once (the probe below runs per
+    // texture over every item).
+    let item_images: Vec<Vec<Option<usize>>> = item_materials
+        .iter()
+        .map(|&m| {
+            let refs = scene.material(m).texture_refs();
+            refs.iter().map(|(t, _)| t.image).collect()
+        })
+        .collect();
     let minification = |r: &TextureRef, (w, h): (u32, u32)| -> f32 {
         let det = r
             .transform
@@ -494,14 +503,8 @@ pub fn render_with_progress(
         let texels = (w as f32 * h as f32 * det).sqrt();
         items
             .iter()
-            .zip(&item_materials)
-            .filter(|(_, m)| {
-                scene
-                    .material(**m)
-                    .texture_refs()
-                    .iter()
-                    .any(|(t, _)| t.image == r.image)
-            })
+            .zip(&item_images)
+            .filter(|(_, images)| images.contains(&r.image))
             .map(|(item, _)| item.uv_per_pixel[(r.tex_coord as usize).min(1)] * texels)
             .fold(0.0, f32::max)
     };
