@@ -3,42 +3,15 @@
 
 mod common;
 
-use std::sync::atomic::{AtomicU32, Ordering};
+use std::sync::atomic::Ordering;
 
 use barytex_raster::{
     CullMode, DrawStats, Fragment, Framebuffer, Interpolation, PipelineState, Shader, draw,
 };
 use barytex_texture::Limits;
-use common::no_depth;
+use common::{Counter, no_depth};
 use glam::{Mat4, Vec2, Vec3, Vec4};
 use proptest::prelude::*;
-
-/// Positions already in clip space; counts how often each pixel is shaded.
-struct Counter {
-    width: u32,
-    counts: Vec<AtomicU32>,
-}
-
-impl Counter {
-    fn new(width: u32, height: u32) -> Self {
-        Self {
-            width,
-            counts: (0..width * height).map(|_| AtomicU32::new(0)).collect(),
-        }
-    }
-}
-
-impl Shader for Counter {
-    type Vertex = Vec4;
-    type Varying = f32;
-    fn vertex(&self, v: &Vec4) -> (Vec4, f32) {
-        (*v, 0.0)
-    }
-    fn fragment(&self, f: &Fragment<'_, f32>) -> Option<Vec4> {
-        self.counts[(f.pixel.y * self.width + f.pixel.x) as usize].fetch_add(1, Ordering::Relaxed);
-        Some(Vec4::ONE)
-    }
-}
 
 /// Screen position (pixels, y down) of a `w × h` target → clip space with w = 1.
 fn clip_of(p: Vec2, w: u32, h: u32) -> Vec4 {

@@ -1,12 +1,15 @@
 //! The seed's scanline backend: its worked example reproduced with exact rationals, and the
 //! same coverage as the edge-function backend on random fixed-point triangles.
 
+mod common;
+
 use std::ops::{Add, Div, Mul, Sub};
-use std::sync::atomic::{AtomicU32, Ordering};
+use std::sync::atomic::Ordering;
 
 use barytex_raster::scanline::{SampleRule, Scalar, ScanVertex, scanline_fill};
-use barytex_raster::{CullMode, Fragment, Framebuffer, PipelineState, Shader, draw};
+use barytex_raster::{CullMode, Framebuffer, PipelineState, draw};
 use barytex_texture::Limits;
+use common::Counter;
 use glam::Vec4;
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -106,23 +109,6 @@ fn seed_003_worked_example_is_reproduced_exactly() {
     }
 }
 
-struct Counter {
-    width: u32,
-    counts: Vec<AtomicU32>,
-}
-
-impl Shader for Counter {
-    type Vertex = Vec4;
-    type Varying = f32;
-    fn vertex(&self, v: &Vec4) -> (Vec4, f32) {
-        (*v, 0.0)
-    }
-    fn fragment(&self, f: &Fragment<'_, f32>) -> Option<Vec4> {
-        self.counts[(f.pixel.y * self.width + f.pixel.x) as usize].fetch_add(1, Ordering::Relaxed);
-        Some(Vec4::ONE)
-    }
-}
-
 proptest! {
     #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
 
@@ -157,7 +143,7 @@ proptest! {
                 Vec4::new(sx / SIZE as f32 * 2.0 - 1.0, 1.0 - sy / SIZE as f32 * 2.0, 0.5, 1.0)
             })
             .collect();
-        let counter = Counter { width: SIZE, counts: (0..SIZE * SIZE).map(|_| AtomicU32::new(0)).collect() };
+        let counter = Counter::new(SIZE, SIZE);
         let mut fb = Framebuffer::new(SIZE, SIZE, Vec4::ZERO, &Limits::default()).expect("small");
         let state = PipelineState { cull: CullMode::None, depth_compare: None, ..PipelineState::default() };
         draw(&mut fb, &counter, &state, &vertices, &[0, 1, 2]);

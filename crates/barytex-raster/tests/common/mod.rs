@@ -1,10 +1,40 @@
-//! What several rasterizer test files share: a pipeline without depth or culling, and a
-//! jittered mesh that covers a target with no gaps and no overlaps.
+//! What several rasterizer test files share: a pipeline without depth or culling, a jittered
+//! mesh that covers a target with no gaps and no overlaps, and a shader that counts the
+//! fragments of each pixel.
 
 #![allow(dead_code)] // Each test file uses its part.
 
-use barytex_raster::{CullMode, PipelineState};
-use glam::Vec2;
+use std::sync::atomic::{AtomicU32, Ordering};
+
+use barytex_raster::{CullMode, Fragment, PipelineState, Shader};
+use glam::{Vec2, Vec4};
+
+/// Positions already in clip space; counts how often each pixel is shaded.
+pub(crate) struct Counter {
+    pub(crate) width: u32,
+    pub(crate) counts: Vec<AtomicU32>,
+}
+
+impl Counter {
+    pub(crate) fn new(width: u32, height: u32) -> Self {
+        Self {
+            width,
+            counts: (0..width * height).map(|_| AtomicU32::new(0)).collect(),
+        }
+    }
+}
+
+impl Shader for Counter {
+    type Vertex = Vec4;
+    type Varying = f32;
+    fn vertex(&self, v: &Vec4) -> (Vec4, f32) {
+        (*v, 0.0)
+    }
+    fn fragment(&self, f: &Fragment<'_, f32>) -> Option<Vec4> {
+        self.counts[(f.pixel.y * self.width + f.pixel.x) as usize].fetch_add(1, Ordering::Relaxed);
+        Some(Vec4::ONE)
+    }
+}
 
 /// No culling, no depth test, no depth writes.
 pub(crate) fn no_depth() -> PipelineState {
