@@ -355,23 +355,3 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
     }
     section
 }
-
-/// `k` in superscript digits.
-pub(super) fn superscript(k: i32) -> String {
-    k.to_string()
-        .chars()
-        .map(|c| match c {
-            '0' => '⁰',
-            '1' => '¹',
-            '2' => '²',
-            '3' => '³',
-            '4' => '⁴',
-            '5' => '⁵',
-            '6' => '⁶',
-            '7' => '⁷',
-            '8' => '⁸',
-            '9' => '⁹',
-            other => other,
-        })
-        .collect()
-}

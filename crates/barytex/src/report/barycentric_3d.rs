@@ -10,7 +10,8 @@ use barytex_testkit::exact;
 use barytex_testkit::ulp::ulp_f32;
 use glam::Vec3;
 
-use super::barycentric_2d::{sign_f32, superscript};
+use super::barycentric_2d::sign_f32;
+use super::table::superscript;
 use super::table::{fmt_err, fmt_ulps, per_case_matrix};
 use super::{ErrorStats, Row, Section, Settings, Table};
 use crate::timing::ns_per_call;

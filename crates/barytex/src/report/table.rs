@@ -400,3 +400,24 @@ pub(crate) fn fmt_ulps(u: f64) -> String {
         format!("{u:.1e}")
     }
 }
+
+/// `k` in superscript digits (and sign).
+pub(super) fn superscript(k: i32) -> String {
+    k.to_string()
+        .chars()
+        .map(|c| match c {
+            '-' => '⁻',
+            '0' => '⁰',
+            '1' => '¹',
+            '2' => '²',
+            '3' => '³',
+            '4' => '⁴',
+            '5' => '⁵',
+            '6' => '⁶',
+            '7' => '⁷',
+            '8' => '⁸',
+            '9' => '⁹',
+            other => other,
+        })
+        .collect()
+}
