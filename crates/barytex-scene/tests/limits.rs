@@ -3,6 +3,8 @@
 //! and `SceneError::UnsupportedExtension`. Every document is built here, so nothing depends on
 //! the shared fixtures.
 
+mod common;
+
 use barytex_scene::{
     LoadOptions, SceneError, SceneLimits, load_path, load_slice, load_slice_with_base,
 };
@@ -143,27 +145,13 @@ fn tiny_png() -> Vec<u8> {
     encode_png(&texture).expect("encode")
 }
 
-/// One textured triangle whose image is `image_uri`.
-fn textured_triangle(image_uri: &str) -> String {
-    format!(
-        r#"{{"asset":{{"version":"2.0"}},
-            "images":[{{"uri":"{image_uri}"}}],
-            "textures":[{{"source":0}}],
-            "materials":[{{"pbrMetallicRoughness":{{"baseColorTexture":{{"index":0}}}}}}],
-            "accessors":[{{"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[0,0,0]}},
-                         {{"componentType":5126,"count":3,"type":"VEC2"}}],
-            "meshes":[{{"primitives":[{{"attributes":{{"POSITION":0,"TEXCOORD_0":1}},"material":0}}]}}],
-            "nodes":[{{"mesh":0}}],"scenes":[{{"nodes":[0]}}]}}"#
-    )
-}
-
 #[test]
 fn max_image_file_bytes_refuses_external_and_data_uri_images() {
     let png = tiny_png();
     let len = png.len() as u64;
     let dir = temp_dir("image-bytes");
     std::fs::write(dir.join("tex.png"), &png).expect("write");
-    let gltf = textured_triangle("tex.png");
+    let gltf = common::textured_triangle("tex.png");
     let small = SceneLimits {
         max_image_file_bytes: len - 1,
         ..SceneLimits::default()
@@ -193,7 +181,7 @@ fn max_image_file_bytes_refuses_external_and_data_uri_images() {
         "data:image/png;base64,{}",
         base64::engine::general_purpose::STANDARD.encode(vec![0u8; 3000])
     );
-    let gltf = textured_triangle(&data);
+    let gltf = common::textured_triangle(&data);
     let limits = SceneLimits {
         max_image_file_bytes: 1000,
         ..SceneLimits::default()
@@ -332,7 +320,7 @@ fn missing_files_are_io_errors_naming_the_path() {
         "{r:?}"
     );
     // An external image.
-    let gltf = textured_triangle("missing.png");
+    let gltf = common::textured_triangle("missing.png");
     let r = load_slice_with_base(gltf.as_bytes(), &dir, &LoadOptions::default());
     assert!(
         matches!(&r, Err(SceneError::Io { path, .. }) if path.contains("missing.png")),

@@ -197,17 +197,7 @@ fn gigantic_png_is_refused_before_decoding() {
     );
     png_chunk(&mut png, b"IEND", &[]);
     let image = base64::engine::general_purpose::STANDARD.encode(&png);
-    // One triangle with UVs (zeros) and a material sampling the image.
-    let gltf = format!(
-        r#"{{"asset":{{"version":"2.0"}},
-            "images":[{{"uri":"data:image/png;base64,{image}"}}],
-            "textures":[{{"source":0}}],
-            "materials":[{{"pbrMetallicRoughness":{{"baseColorTexture":{{"index":0}}}}}}],
-            "accessors":[{{"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[0,0,0]}},
-                         {{"componentType":5126,"count":3,"type":"VEC2"}}],
-            "meshes":[{{"primitives":[{{"attributes":{{"POSITION":0,"TEXCOORD_0":1}},"material":0}}]}}],
-            "nodes":[{{"mesh":0}}],"scenes":[{{"nodes":[0]}}]}}"#
-    );
+    let gltf = common::textured_triangle(&format!("data:image/png;base64,{image}"));
     let start = std::time::Instant::now();
     let r = load_slice(gltf.as_bytes(), &LoadOptions::default());
     assert!(
