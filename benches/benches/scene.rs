@@ -16,7 +16,6 @@
 mod common;
 
 use std::hint::black_box;
-use std::path::PathBuf;
 use std::time::Duration;
 
 use barytex_scene::render::{AntiAliasing, CameraChoice, Filter, RenderOptions, Shading};
@@ -36,10 +35,14 @@ fn config() -> Criterion {
 }
 
 fn load(relative: &str) -> Option<Scene> {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../shared/fixtures/gltf")
-        .join(relative);
-    match load_path(&path, &LoadOptions::default()) {
+    let Some(fixtures) = barytex_testkit::fixtures_dir() else {
+        eprintln!("skipped {relative}: the shared fixtures are absent");
+        return None;
+    };
+    match load_path(
+        fixtures.join("gltf").join(relative),
+        &LoadOptions::default(),
+    ) {
         Ok(scene) => Some(scene),
         Err(e) => {
             eprintln!("skipped {relative}: {e}");

@@ -2,19 +2,10 @@
 //! --quick` and `uv-layout`.
 #![allow(clippy::unwrap_used)]
 
-use std::path::PathBuf;
+mod common;
+
+use common::{barytex, gltf_fixture, temp_dir};
 use std::process::Command;
-
-fn barytex() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_barytex"))
-}
-
-/// A fresh directory under the system's temporary directory, unique to this process and name.
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("barytex-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
-}
 
 #[test]
 fn examples_prints_the_seed_examples() {
@@ -175,12 +166,9 @@ fn no_arguments_render_the_demo_scene() {
 /// errors with a failing exit status, not panics.
 #[test]
 fn render_writes_the_file_and_rejects_bad_options() {
-    let fixtures = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/fixtures/gltf");
-    let model = fixtures.join("BoxVertexColors/glTF-Binary/BoxVertexColors.glb");
-    if !model.is_file() {
-        println!("note: fixture {} absent, test skipped", model.display());
+    let Some(model) = gltf_fixture("BoxVertexColors/glTF-Binary/BoxVertexColors.glb") else {
         return;
-    }
+    };
     let dir = temp_dir("render");
     std::fs::create_dir_all(&dir).unwrap();
     let out = dir.join("box.png");

@@ -2,11 +2,15 @@
 //! shading.
 #![allow(clippy::unwrap_used)]
 
-use std::process::Command;
+mod common;
+
+use common::{barytex, temp_dir};
 
 fn stages_line(extra: &[&str]) -> String {
-    let out = std::env::temp_dir().join(format!("barytex-stages-{}.png", std::process::id()));
-    let output = Command::new(env!("CARGO_BIN_EXE_barytex"))
+    let dir = temp_dir("stages");
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("demo.png");
+    let output = barytex()
         .args(["demo", "--size", "64x36", "-o"])
         .arg(&out)
         .args(extra)
@@ -14,7 +18,7 @@ fn stages_line(extra: &[&str]) -> String {
         .unwrap();
     let stdout = String::from_utf8(output.stdout).unwrap();
     assert!(output.status.success(), "{stdout}");
-    let _ = std::fs::remove_file(&out);
+    let _ = std::fs::remove_dir_all(&dir);
     stdout
         .lines()
         .find(|l| l.starts_with("stages: "))

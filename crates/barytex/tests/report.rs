@@ -3,16 +3,11 @@
 //! stderr that is not a terminal.
 #![allow(clippy::unwrap_used)]
 
-use std::collections::BTreeSet;
-use std::path::{Path, PathBuf};
-use std::process::Command;
+mod common;
 
-/// A fresh directory under the system's temporary directory, unique to this process and name.
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("barytex-report-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
-}
+use common::{barytex, temp_dir};
+use std::collections::BTreeSet;
+use std::path::Path;
 
 /// The targets of the Markdown image links `![…](target)` of `page`.
 fn image_links(page: &str) -> Vec<String> {
@@ -36,7 +31,7 @@ fn read(dir: &Path, name: &str) -> String {
 #[test]
 fn quick_report_writes_and_links_the_charts() {
     let dir = temp_dir("charts");
-    let output = Command::new(env!("CARGO_BIN_EXE_barytex"))
+    let output = barytex()
         .args(["report", "--quick", "--out"])
         .arg(&dir)
         .output()

@@ -1,30 +1,10 @@
 //! `barytex uv-layout FILE`: one picture per textured primitive, drawn over its texture.
 #![allow(clippy::unwrap_used)]
 
+mod common;
+
+use common::{barytex, gltf_fixture, temp_dir};
 use std::path::{Path, PathBuf};
-use std::process::Command;
-
-fn barytex() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_barytex"))
-}
-
-fn fixture(relative: &str) -> Option<PathBuf> {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/fixtures/gltf")
-        .join(relative);
-    if path.exists() {
-        Some(path)
-    } else {
-        eprintln!("skipped: {} is absent", path.display());
-        None
-    }
-}
-
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("barytex-uv-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
-}
 
 fn rgba_at(path: &Path, x: u32, y: u32) -> [u8; 4] {
     use barytex_texture::load::{AnyTexture2d, ColorSpace, load_from_path};
@@ -37,7 +17,7 @@ fn rgba_at(path: &Path, x: u32, y: u32) -> [u8; 4] {
 
 #[test]
 fn a_gltf_file_gets_one_picture_per_textured_primitive_over_its_texture() {
-    let Some(file) = fixture("Avocado/glTF/Avocado.gltf") else {
+    let Some(file) = gltf_fixture("Avocado/glTF/Avocado.gltf") else {
         return;
     };
     let dir = temp_dir("avocado");
@@ -73,7 +53,7 @@ fn a_gltf_file_gets_one_picture_per_textured_primitive_over_its_texture() {
 
 #[test]
 fn texture_transforms_move_the_layout() {
-    let Some(file) = fixture("TextureTransformTest/glTF/TextureTransformTest.gltf") else {
+    let Some(file) = gltf_fixture("TextureTransformTest/glTF/TextureTransformTest.gltf") else {
         return;
     };
     let dir = temp_dir("transform");
@@ -134,7 +114,7 @@ fn bad_uv_layout_input_is_an_error_not_a_panic() {
         assert!(!stderr.contains("panicked"), "{args:?}: {stderr}");
         assert!(!stderr.trim().is_empty(), "{args:?}: no message");
     }
-    if let Some(file) = fixture("Avocado/glTF/Avocado.gltf") {
+    if let Some(file) = gltf_fixture("Avocado/glTF/Avocado.gltf") {
         let output = barytex()
             .arg("uv-layout")
             .arg(file)
