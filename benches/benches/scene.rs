@@ -1,6 +1,6 @@
 //! The glTF sample models Avocado and Suzanne at 1024², beside euc 0.5.3 in the same run.
 //!
-//! For each model, under the documented automatic camera (`barytex_scene::render::auto_camera`):
+//! For each model, under the documented automatic camera (`barytex_render::auto_camera`):
 //!
 //! - `barytex_draw_1_thread` / `_2_threads` and `euc`: the model's triangles in clip space, drawn
 //!   depth-tested without culling, shaded by the same hand-written nearest lookup of the model's
@@ -18,8 +18,8 @@ mod common;
 use std::hint::black_box;
 use std::time::Duration;
 
-use barytex_scene::render::{AntiAliasing, CameraChoice, Filter, RenderOptions, Shading};
-use barytex_scene::{LoadOptions, Scene, load_path};
+use barytex_gltf::{LoadOptions, Scene, load_path};
+use barytex_render::{AntiAliasing, CameraChoice, Filter, RenderOptions, Shading};
 use barytex_texture::load::AnyTexture2d;
 use common::{ClipMesh, NearestTexture, render_barytex, render_euc};
 use criterion::{Criterion, criterion_group, criterion_main};
@@ -54,7 +54,7 @@ fn load(relative: &str) -> Option<Scene> {
 /// Every triangle of the scene in clip space under the automatic camera, with TEXCOORD_0 and
 /// world normals.
 fn clip_mesh(scene: &Scene) -> ClipMesh {
-    let camera = barytex_scene::render::auto_camera(scene, 1.0).expect("a scene with geometry");
+    let camera = barytex_render::auto_camera(scene, 1.0).expect("a scene with geometry");
     let view_projection = camera.projection * camera.view;
     let mut mesh = ClipMesh {
         clip: Vec::new(),
@@ -166,7 +166,7 @@ fn bench(c: &mut Criterion) {
         group.bench_function("barytex_render_unlit_1_thread", |b| {
             b.iter(|| {
                 one.install(|| {
-                    black_box(barytex_scene::render::render(&scene, &options).expect("renders"))
+                    black_box(barytex_render::render(&scene, &options).expect("renders"))
                 })
             });
         });

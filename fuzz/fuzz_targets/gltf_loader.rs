@@ -1,9 +1,9 @@
 //! Fuzz target `gltf_loader`: arbitrary bytes as a glTF or GLB file. Asserts
-//! `barytex_testkit::fuzz_inputs::gltf_loader::check_gltf_loader` (no panic, no caught panic,
+//! `barytex_tests::fuzz_inputs::gltf_loader::check_gltf_loader` (no panic, no caught panic,
 //! accepted scenes render), shared with the regression replay in `tests/tests/fuzz_regressions.rs`.
 #![no_main]
 
-use barytex_testkit::fuzz_inputs::gltf_loader::{GLTF_LEN, check_gltf_loader, gltf_loader_code};
+use barytex_tests::fuzz_inputs::gltf_loader::{GLTF_LEN, check_gltf_loader, gltf_loader_code};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {

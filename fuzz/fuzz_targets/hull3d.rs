@@ -1,5 +1,5 @@
 //! Fuzz target `hull3d`: decodes the input with
-//! `barytex_testkit::fuzz_inputs::hull3d::hull3d_points` (layout documented there and in
+//! `barytex_tests::fuzz_inputs::hull3d::hull3d_points` (layout documented there and in
 //! `fuzz/regressions/hull3d/README.md`, shared with the regression replay in
 //! `tests/tests/fuzz_regressions.rs`) and asserts `check_hull3d`: the exact `orient3d` sign and
 //! antisymmetry on the first four points, and the 3D hull's validity (plus the brute-force vertex
@@ -7,7 +7,7 @@
 //! block to paste into a regression test.
 #![no_main]
 
-use barytex_testkit::fuzz_inputs::hull3d::{HULL3D_LEN, check_hull3d, hull3d_code};
+use barytex_tests::fuzz_inputs::hull3d::{HULL3D_LEN, check_hull3d, hull3d_code};
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {

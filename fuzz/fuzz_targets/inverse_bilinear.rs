@@ -1,11 +1,11 @@
 //! Fuzz target `inverse_bilinear`: decodes the input with
-//! `barytex_testkit::fuzz_inputs::inverse_bilinear_geometry` (layout documented there, shared with the
+//! `barytex_tests::fuzz_inputs::inverse_bilinear_geometry` (layout documented there, shared with the
 //! regression replay in `tests/tests/fuzz_regressions.rs`) and asserts
-//! `barytex_testkit::fuzz_inputs::check_inverse_bilinear`. A failure panics with the violated invariant and
+//! `barytex_tests::fuzz_inputs::check_inverse_bilinear`. A failure panics with the violated invariant and
 //! the input as a Rust block to paste into a regression test.
 #![no_main]
 
-use barytex_testkit::fuzz_inputs::{
+use barytex_tests::fuzz_inputs::{
     INVERSE_BILINEAR_LEN, check_inverse_bilinear, inverse_bilinear_code,
 };
 use libfuzzer_sys::fuzz_target;

@@ -1,12 +1,12 @@
 //! Fuzz target `raster_soup`: arbitrary triangle soups (and watertight fans) through the whole
 //! draw call of barytex-raster. Decodes the input with
-//! `barytex_testkit::fuzz_inputs::raster_soup` (layout documented there, shared with the
+//! `barytex_tests::fuzz_inputs::raster_soup` (layout documented there, shared with the
 //! regression replay in `tests/tests/fuzz_regressions.rs`) and asserts `check_raster_soup`: no
 //! panic, no write outside the target or scissor, every triangle accounted for, fans covered at
 //! most once per pixel.
 #![no_main]
 
-use barytex_testkit::fuzz_inputs::raster_soup::{
+use barytex_tests::fuzz_inputs::raster_soup::{
     RASTER_SOUP_LEN, check_raster_soup, raster_soup_code,
 };
 use libfuzzer_sys::fuzz_target;

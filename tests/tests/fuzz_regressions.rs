@@ -1,7 +1,7 @@
 //! Replays every saved fuzz input of `fuzz/regressions/<target>/` through the same invariant
 //! checks as the fuzz target, so a crash found once stays fixed without needing `cargo fuzz`.
 //!
-//! The byte layouts live in `barytex_testkit::fuzz_inputs`, which both the fuzz targets and this
+//! The byte layouts live in `barytex_tests::fuzz_inputs`, which both the fuzz targets and this
 //! test call, so a saved input decodes to the same geometry in both (the `layout_*` tests below
 //! pin the decoding of hand-written inputs).
 //!
@@ -11,10 +11,10 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use barytex_testkit::fuzz_inputs::hull2d::{check_hull2d, hull2d_points};
-use barytex_testkit::fuzz_inputs::hull3d::{check_hull3d, hull3d_points};
-use barytex_testkit::fuzz_inputs::polygon::{check_polygon, polygon_geometry};
-use barytex_testkit::fuzz_inputs::{
+use barytex_tests::fuzz_inputs::hull2d::{check_hull2d, hull2d_points};
+use barytex_tests::fuzz_inputs::hull3d::{check_hull3d, hull3d_points};
+use barytex_tests::fuzz_inputs::polygon::{check_polygon, polygon_geometry};
+use barytex_tests::fuzz_inputs::{
     check_inverse_bilinear, check_orient_barycentric, inverse_bilinear_geometry,
     orient_barycentric_geometry,
 };
@@ -61,7 +61,7 @@ fn replay(target: &str, check: fn(&[u8]) -> Result<(), String>) {
 fn environment_regressions() {
     replay(
         "environment",
-        barytex_testkit::fuzz_inputs::environment::check_environment,
+        barytex_tests::fuzz_inputs::environment::check_environment,
     );
 }
 
@@ -69,7 +69,7 @@ fn environment_regressions() {
 fn gltf_loader_regressions() {
     replay(
         "gltf_loader",
-        barytex_testkit::fuzz_inputs::gltf_loader::check_gltf_loader,
+        barytex_tests::fuzz_inputs::gltf_loader::check_gltf_loader,
     );
 }
 
@@ -77,7 +77,7 @@ fn gltf_loader_regressions() {
 fn raster_soup_regressions() {
     replay(
         "raster_soup",
-        barytex_testkit::fuzz_inputs::raster_soup::check_raster_soup,
+        barytex_tests::fuzz_inputs::raster_soup::check_raster_soup,
     );
 }
 
@@ -85,7 +85,7 @@ fn raster_soup_regressions() {
 fn sampling_regressions() {
     replay(
         "sampling",
-        barytex_testkit::fuzz_inputs::sampling::check_sampling,
+        barytex_tests::fuzz_inputs::sampling::check_sampling,
     );
 }
 
@@ -93,20 +93,20 @@ fn sampling_regressions() {
 fn mip_generation_regressions() {
     replay(
         "mip_generation",
-        barytex_testkit::fuzz_inputs::mip_generation::check_mip_generation,
+        barytex_tests::fuzz_inputs::mip_generation::check_mip_generation,
     );
 }
 
 #[test]
 fn slerp_regressions() {
-    replay("slerp", barytex_testkit::fuzz_inputs::slerp::check_slerp);
+    replay("slerp", barytex_tests::fuzz_inputs::slerp::check_slerp);
 }
 
 #[test]
 fn uv_mappings_regressions() {
     replay(
         "uv_mappings",
-        barytex_testkit::fuzz_inputs::uv_mappings::check_uv_mappings,
+        barytex_tests::fuzz_inputs::uv_mappings::check_uv_mappings,
     );
 }
 

@@ -1,4 +1,5 @@
-//! Test support shared by barytex's property tests, fuzz targets and report.
+//! Test support shared by barytex's property tests, fuzz targets, benchmarks and report: it
+//! depends only on barytex-interp, -uv and -texture, so a crate's tests build no more than those.
 //!
 //! - [`strategies`]: proptest strategies for floats (bounded and raw bit patterns), triangles and
 //!   quads (well-shaped and near-degenerate), and near-equal perturbations.
@@ -16,12 +17,10 @@
 //! - [`sampling_invariants`]: dEQP-style allowed-result boxes for texture lookups.
 //! - [`ulp`]: distances in units in the last place.
 //! - [`components`]: flatten any interpolable value into `f64` components for comparisons.
-//! - [`fuzz_inputs`]: the fuzz targets' byte layouts, shared with the regression replay.
 #![forbid(unsafe_code)]
 
 pub mod components;
 pub mod exact;
-pub mod fuzz_inputs;
 pub mod invariants;
 pub mod invariants_3d;
 pub mod polygon_invariants;
@@ -43,4 +42,38 @@ pub fn fixtures_dir() -> Option<std::path::PathBuf> {
             std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/fixtures")
         });
     dir.is_dir().then_some(dir)
+}
+
+/// Every `.gltf`/`.glb` of the glTF sample models under [`fixtures_dir`]
+/// (`<fixtures>/gltf/<model>/glTF*/`), sorted; empty when the fixtures are absent.
+#[must_use]
+pub fn sample_models() -> Vec<std::path::PathBuf> {
+    let Some(root) = fixtures_dir() else {
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    let Ok(models) = std::fs::read_dir(root.join("gltf")) else {
+        return out;
+    };
+    for model in models.flatten() {
+        let Ok(variants) = std::fs::read_dir(model.path()) else {
+            continue;
+        };
+        for variant in variants.flatten() {
+            if !variant.file_name().to_string_lossy().starts_with("glTF") {
+                continue;
+            }
+            let Ok(files) = std::fs::read_dir(variant.path()) else {
+                continue;
+            };
+            for f in files.flatten() {
+                let p = f.path();
+                if p.extension().is_some_and(|e| e == "gltf" || e == "glb") {
+                    out.push(p);
+                }
+            }
+        }
+    }
+    out.sort();
+    out
 }

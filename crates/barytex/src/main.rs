@@ -44,21 +44,21 @@ struct RenderArgs {
     /// `auto` (the documented automatic camera) or a camera index; default: the scene's first
     /// camera, else auto.
     #[arg(long, value_parser = render_cmd::parse_camera)]
-    camera: Option<barytex_scene::render::CameraChoice>,
+    camera: Option<barytex_render::CameraChoice>,
     /// unlit (glTF's unlit model: base colour × texture × vertex colour), flat, gouraud,
     /// phong, or hybrid (Gouraud, and Phong on triangles the highlight test picks).
     #[arg(long, default_value = "phong", value_parser = render_cmd::parse_shading)]
-    shading: barytex_scene::render::Shading,
+    shading: barytex_render::Shading,
     /// Exponential fog density per unit of distance, in the background colour.
     #[arg(long, value_parser = render_cmd::parse_fog)]
     fog: Option<f32>,
     /// file (the glTF samplers), nearest, bilinear, trilinear, aniso:N or ewa.
     #[arg(long, value_parser = render_cmd::parse_filter)]
-    filter: Option<barytex_scene::render::Filter>,
+    filter: Option<barytex_render::Filter>,
     /// none, ssaa:N (N×N grid), jitter:N (N×N, per pixel), msaa:N (1, 2, 4, 8, 16) or
     /// adaptive:N (up to N samples where needed).
     #[arg(long, value_parser = render_cmd::parse_aa)]
-    aa: Option<barytex_scene::render::AntiAliasing>,
+    aa: Option<barytex_render::AntiAliasing>,
     /// Worker threads (absent or 0: all cores); the image is the same for any count.
     #[arg(long)]
     threads: Option<usize>,
@@ -97,10 +97,10 @@ struct DemoArgs {
 }
 
 impl RenderArgs {
-    /// The demo's defaults, as `barytex_scene::demo::demo_options` sets them (anisotropic
+    /// The demo's defaults, as `barytex_render::demo::demo_options` sets them (anisotropic
     /// filtering, 4× MSAA, fog).
     fn demo_defaults() -> Self {
-        let demo = barytex_scene::demo::demo_options(960, 540);
+        let demo = barytex_render::demo::demo_options(960, 540);
         Self {
             size: (demo.width, demo.height),
             camera: None,
@@ -120,11 +120,11 @@ impl RenderArgs {
         scene: Option<usize>,
         out: PathBuf,
     ) -> render_cmd::Options {
-        let background = barytex_scene::render::RenderOptions::default().background;
+        let background = barytex_render::RenderOptions::default().background;
         render_cmd::Options {
             file,
             scene,
-            render: barytex_scene::render::RenderOptions {
+            render: barytex_render::RenderOptions {
                 width: self.size.0,
                 height: self.size.1,
                 camera: self.camera.unwrap_or_default(),

@@ -4,11 +4,11 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use barytex_scene::render::{
+use barytex_gltf::{LoadOptions, Scene, load_path};
+use barytex_render::{
     AntiAliasing, CameraChoice, Filter, RenderOptions, RenderStats, Rendered, Shading,
     render_with_progress,
 };
-use barytex_scene::{LoadOptions, Scene, load_path};
 
 /// What to render and how.
 #[derive(Clone, Debug)]
@@ -144,7 +144,7 @@ pub(crate) fn parse_fog(text: &str) -> Result<f32, String> {
 fn load(options: &Options) -> Result<(Scene, f64), Box<dyn std::error::Error>> {
     let started = Instant::now();
     let scene = match &options.file {
-        None => barytex_scene::demo::demo_scene(),
+        None => barytex_render::demo::demo_scene(),
         Some(path) => load_path(
             path,
             &LoadOptions {

@@ -4,7 +4,7 @@
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
-use barytex_scene::{LoadOptions, Material, Primitive, Scene, TextureRef, load_path};
+use barytex_gltf::{LoadOptions, Material, Primitive, Scene, TextureRef, load_path};
 use barytex_texture::load::{AnyTexture2d, ColorSpace};
 use barytex_uv::distortion::MeshDistortion;
 use barytex_uv::layout::{LayoutOptions, draw_uv_layout, write_png};

@@ -1,0 +1,153 @@
+//! glTF 2.0 and GLB scenes: a validating loader that never panics, flattened for rendering.
+//!
+//! Files are untrusted input. The GLB container is parsed here with every length checked; the
+//! JSON is read field by field with JSON-pointer errors; every index, accessor range, stride,
+//! attribute format, index value, sparse substitution and image header is checked before it is
+//! used; sizes are compared with [`SceneLimits`] before anything of that size is allocated; and
+//! the whole load runs under [`std::panic::catch_unwind`] as a last line of defence (a panic
+//! becomes [`SceneError::Internal`], which is a bug).
+//!
+//! The result is a [`Scene`]: for the chosen scene (the `scene` property, or the first), every
+//! mesh instance with its world matrix and decoded triangle primitives, cameras, lights
+//! (`KHR_lights_punctual`), materials (with `KHR_materials_unlit` and `KHR_texture_transform`) and
+//! the images those materials sample, decoded in the right colour space.
+//!
+//! ```
+//! use barytex_gltf::{load_slice, LoadOptions};
+//!
+//! // One triangle: three float positions (36 bytes) in a base64 data URI.
+//! let gltf = r#"{
+//!   "asset": {"version": "2.0"},
+//!   "buffers": [{"byteLength": 36, "uri":
+//!     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+//!   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+//!   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+//!                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+//!   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+//!   "nodes": [{"mesh": 0}],
+//!   "scenes": [{"nodes": [0]}]
+//! }"#;
+//! let scene = load_slice(gltf.as_bytes(), &LoadOptions::default())?;
+//! println!("{} triangle(s)", scene.triangle_count());
+//! assert_eq!(scene.triangle_count(), 1);
+//! # Ok::<(), barytex_gltf::SceneError>(())
+//! ```
+#![forbid(unsafe_code)]
+
+mod accessor;
+mod animation;
+mod buffer;
+pub mod camera;
+mod document;
+mod error;
+mod extensions;
+mod glb;
+mod image;
+mod json;
+pub mod light;
+mod limits;
+pub mod material;
+pub mod mesh;
+mod node;
+pub mod sampler;
+pub mod scene;
+mod skin;
+pub mod topology;
+mod uri;
+mod variants;
+
+use std::path::Path;
+
+pub use camera::{Projection, SceneCamera};
+pub use error::SceneError;
+pub use light::{Light, LightKind, SceneLight};
+pub use limits::SceneLimits;
+pub use material::{AlphaMode, Material, TextureRef};
+pub use mesh::{Mesh, Primitive};
+pub use sampler::{MagFilter, MinFilter, Sampler, Wrap};
+pub use scene::{MeshInstance, Scene, SceneImage, SceneStats, Texture};
+pub use topology::Topology;
+
+/// How to load.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LoadOptions {
+    /// Size limits for untrusted input.
+    pub limits: SceneLimits,
+    /// Which scene to flatten; `None` is the document's `scene`, else the first.
+    pub scene: Option<usize>,
+    /// Whether to decode the images the scene's materials sample (their bytes are checked
+    /// either way).
+    pub decode_images: bool,
+}
+
+impl Default for LoadOptions {
+    fn default() -> Self {
+        Self {
+            limits: SceneLimits::default(),
+            scene: None,
+            decode_images: true,
+        }
+    }
+}
+
+fn guarded(f: impl FnOnce() -> Result<Scene, SceneError>) -> Result<Scene, SceneError> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or_else(|payload| {
+        let msg = payload
+            .downcast_ref::<&str>()
+            .map(|s| (*s).to_owned())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_default();
+        Err(SceneError::Internal(msg))
+    })
+}
+
+/// Loads a glTF (JSON) or GLB held in memory. External files cannot be resolved (there is no
+/// folder): buffers and images must be embedded (GLB chunk, `bufferView` or `data:` URI).
+///
+/// # Errors
+/// Any [`SceneError`]: malformed container or JSON, an invalid object, a limit exceeded.
+pub fn load_slice(bytes: &[u8], options: &LoadOptions) -> Result<Scene, SceneError> {
+    guarded(|| document::load(bytes, None, false, options))
+}
+
+/// Loads a glTF or GLB held in memory whose relative URIs resolve against `base_dir`.
+///
+/// # Errors
+/// As [`load_slice`], plus [`SceneError::Io`] for a missing external file.
+pub fn load_slice_with_base(
+    bytes: &[u8],
+    base_dir: &Path,
+    options: &LoadOptions,
+) -> Result<Scene, SceneError> {
+    guarded(|| document::load(bytes, Some(base_dir), false, options))
+}
+
+/// Loads a `.gltf` or `.glb` file (a `.glb` extension, or the GLB magic, selects the binary
+/// container); relative URIs resolve against the file's folder.
+///
+/// # Errors
+/// As [`load_slice_with_base`].
+pub fn load_path(path: impl AsRef<Path>, options: &LoadOptions) -> Result<Scene, SceneError> {
+    let path = path.as_ref();
+    guarded(|| {
+        let io = |source| SceneError::Io {
+            path: path.display().to_string(),
+            source,
+        };
+        let len = std::fs::metadata(path).map_err(io)?.len();
+        if len > options.limits.max_file_bytes {
+            return Err(SceneError::TooLarge {
+                pointer: String::new(),
+                what: "file bytes",
+                requested: len,
+                limit: options.limits.max_file_bytes,
+            });
+        }
+        let bytes = std::fs::read(path).map_err(io)?;
+        let is_glb = path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("glb"));
+        let base = path.parent().unwrap_or_else(|| Path::new("."));
+        document::load(&bytes, Some(base), is_glb, options)
+    })
+}

@@ -1,0 +1,156 @@
+//! What a render is asked to do: size, camera, shading, texture filter, anti-aliasing.
+
+use barytex_texture::sampler::{
+    AnisotropicFilter, FilterMode, MipmapFilterMode, SamplerDescriptor,
+};
+use glam::Vec4;
+
+/// Which camera to look through.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum CameraChoice {
+    /// The scene's first camera, or the automatic camera when it has none.
+    #[default]
+    First,
+    /// The automatic camera (see [`auto_camera`](crate::auto_camera)), even when the
+    /// scene has cameras.
+    Auto,
+    /// The scene's camera `n` (in node order).
+    Index(usize),
+}
+
+/// How surfaces are lit.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Shading {
+    /// glTF's unlit model for every material: base colour factor × base colour texture ×
+    /// vertex colour. Comparable with any renderer, no lighting differences.
+    Unlit,
+    /// Lighting once per polygon's plane: the face normal at every pixel (facets visible).
+    Flat,
+    /// Lighting at the vertices, interpolated across the triangle (the texture still
+    /// modulates per pixel); highlights inside a triangle are lost.
+    Gouraud,
+    /// Per-pixel Blinn–Phong with the scene's punctual lights (a headlight when it has none)
+    /// and the interpolated, renormalized normal. Materials marked `KHR_materials_unlit` stay
+    /// unlit under every lit mode.
+    #[default]
+    Phong,
+    /// Gouraud, except on triangles where the seed's highlight test (H-test,
+    /// `barytex_shade::HighlightTest`) finds a visible specular highlight: those get Phong.
+    Hybrid,
+}
+
+/// The texture filter, overriding the files' samplers (their wrap modes stay).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Filter {
+    /// What each glTF sampler asks for (mipmaps when its minification filter uses them).
+    #[default]
+    FromFile,
+    /// Nearest texel, no mipmaps.
+    Nearest,
+    /// Bilinear, no mipmaps.
+    Bilinear,
+    /// Bilinear within and linear between mip levels.
+    Trilinear,
+    /// Anisotropic probes over trilinear, up to `n` (1–16) probes.
+    Anisotropic(u16),
+    /// Elliptical weighted average.
+    Ewa,
+}
+
+impl Filter {
+    /// The descriptor `file` (from the glTF sampler) becomes under this filter.
+    #[must_use]
+    pub fn apply(self, file: SamplerDescriptor) -> SamplerDescriptor {
+        let mut d = file;
+        let set = |d: &mut SamplerDescriptor, filter: FilterMode, mip: Option<MipmapFilterMode>| {
+            d.mag_filter = filter;
+            d.min_filter = filter;
+            match mip {
+                Some(m) => {
+                    d.mipmap_filter = m;
+                    d.lod_max_clamp = 32.0;
+                }
+                None => d.lod_max_clamp = 0.0,
+            }
+        };
+        match self {
+            Self::FromFile => {}
+            Self::Nearest => set(&mut d, FilterMode::Nearest, None),
+            Self::Bilinear => set(&mut d, FilterMode::Linear, None),
+            Self::Trilinear => set(&mut d, FilterMode::Linear, Some(MipmapFilterMode::Linear)),
+            Self::Anisotropic(n) => {
+                set(&mut d, FilterMode::Linear, Some(MipmapFilterMode::Linear));
+                d.anisotropy_clamp = n.clamp(1, 16);
+                d.anisotropic_filter = AnisotropicFilter::Probes;
+            }
+            Self::Ewa => {
+                set(&mut d, FilterMode::Linear, Some(MipmapFilterMode::Linear));
+                d.anisotropy_clamp = 16;
+                d.anisotropic_filter = AnisotropicFilter::Ewa;
+            }
+        }
+        d
+    }
+}
+
+/// Anti-aliasing.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum AntiAliasing {
+    /// One sample per pixel, at its centre.
+    #[default]
+    None,
+    /// Supersampling on a regular `n × n` grid, shading every sample.
+    Supersample(u32),
+    /// Supersampling with `n × n` stratified positions jittered per pixel.
+    Jitter(u32),
+    /// MSAA with the standard positions for `n` samples (1, 2, 4, 8 or 16): coverage per
+    /// sample, shading per pixel.
+    Msaa(u32),
+    /// Adaptive supersampling up to `n` samples per pixel.
+    Adaptive(u32),
+}
+
+/// Everything a render needs besides the scene.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RenderOptions {
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+    /// Which camera.
+    pub camera: CameraChoice,
+    /// Lighting model.
+    pub shading: Shading,
+    /// Texture filter.
+    pub filter: Filter,
+    /// Anti-aliasing.
+    pub anti_aliasing: AntiAliasing,
+    /// Background colour (linear, straight alpha).
+    pub background: Vec4,
+    /// Exponential fog (Euclidean distance from the eye) over lit and unlit surfaces; `None`:
+    /// clear air.
+    pub fog: Option<barytex_shade::ExponentialFog>,
+    /// Also time every pass again with a constant fragment shader into a scratch copy of the
+    /// target, to split the draw time into rasterization and shading
+    /// ([`RenderStats::raster_seconds`](super::RenderStats::raster_seconds)). Costs about one
+    /// more draw; the image is unchanged.
+    pub measure_stages: bool,
+}
+
+impl Default for RenderOptions {
+    /// 800 × 600, the first camera, Blinn–Phong, the files' filters, no anti-aliasing, a
+    /// mid-grey background, no fog.
+    fn default() -> Self {
+        Self {
+            width: 800,
+            height: 600,
+            camera: CameraChoice::First,
+            shading: Shading::Phong,
+            filter: Filter::FromFile,
+            anti_aliasing: AntiAliasing::None,
+            background: Vec4::new(0.18, 0.18, 0.2, 1.0),
+            fog: None,
+            measure_stages: false,
+        }
+    }
+}

@@ -1,0 +1,196 @@
+//! The textures a render samples: each (image, colour space, sampler) the scene's materials use,
+//! with a mip chain only when the filter uses mipmaps and the texture is actually minified
+//! somewhere on screen.
+
+use std::collections::HashMap;
+
+use barytex_texture::load::{AnyTexture2d, ColorSpace};
+use barytex_texture::{
+    MipChain, MipOptions, Sampler as _, SamplerDescriptor, Texel, Texture2d, TextureError,
+    TextureSampler,
+};
+use glam::{Mat3, Vec2, Vec4};
+
+use barytex_gltf::material::TextureRef;
+use barytex_gltf::scene::Scene;
+
+/// A decoded texture with its filter, whatever its texel format.
+#[derive(Clone, Debug)]
+pub(crate) enum PreparedTexture {
+    Srgba8(TextureSampler<barytex_texture::Srgba8>),
+    Rgba8(TextureSampler<barytex_texture::Rgba8>),
+    R8(TextureSampler<barytex_texture::R8>),
+    Rgba16f(TextureSampler<barytex_texture::Rgba16f>),
+    Rgba32f(TextureSampler<barytex_texture::Rgba32f>),
+}
+
+impl PreparedTexture {
+    /// Linear straight-alpha colour over the pixel footprint.
+    #[inline]
+    pub(crate) fn sample(&self, uv: Vec2, ddx: Vec2, ddy: Vec2) -> Vec4 {
+        match self {
+            Self::Srgba8(s) => s.sample(uv, ddx, ddy),
+            Self::Rgba8(s) => s.sample(uv, ddx, ddy),
+            Self::R8(s) => s.sample(uv, ddx, ddy),
+            Self::Rgba16f(s) => s.sample(uv, ddx, ddy),
+            Self::Rgba32f(s) => s.sample(uv, ddx, ddy),
+        }
+    }
+}
+
+impl barytex_texture::Sampler for PreparedTexture {
+    fn sample(&self, uv: Vec2, ddx: Vec2, ddy: Vec2) -> Vec4 {
+        Self::sample(self, uv, ddx, ddy)
+    }
+
+    fn sample_level(&self, uv: Vec2, lod: f32) -> Vec4 {
+        match self {
+            Self::Srgba8(s) => s.sample_level(uv, lod),
+            Self::Rgba8(s) => s.sample_level(uv, lod),
+            Self::R8(s) => s.sample_level(uv, lod),
+            Self::Rgba16f(s) => s.sample_level(uv, lod),
+            Self::Rgba32f(s) => s.sample_level(uv, lod),
+        }
+    }
+}
+
+/// An equirectangular environment ready to sample: a linear-light mip chain, trilinear with
+/// 8 anisotropic probes, repeating around (u) and clamped at the poles (v).
+pub(crate) fn environment(image: &AnyTexture2d) -> Result<Option<PreparedTexture>, TextureError> {
+    use barytex_texture::sampler::{AddressMode, FilterMode, MipmapFilterMode};
+    let descriptor = SamplerDescriptor {
+        address_mode_u: AddressMode::Repeat,
+        address_mode_v: AddressMode::ClampToEdge,
+        mag_filter: FilterMode::Linear,
+        min_filter: FilterMode::Linear,
+        mipmap_filter: MipmapFilterMode::Linear,
+        anisotropy_clamp: 8,
+        ..SamplerDescriptor::default()
+    };
+    Ok(Some(match image {
+        AnyTexture2d::Srgba8(t) => PreparedTexture::Srgba8(prepare(t, descriptor, true)?),
+        AnyTexture2d::Rgba8(t) => PreparedTexture::Rgba8(prepare(t, descriptor, true)?),
+        AnyTexture2d::R8(t) => PreparedTexture::R8(prepare(t, descriptor, true)?),
+        AnyTexture2d::Rgba16f(t) => PreparedTexture::Rgba16f(prepare(t, descriptor, true)?),
+        AnyTexture2d::Rgba32f(t) => PreparedTexture::Rgba32f(prepare(t, descriptor, true)?),
+        _ => return Ok(None),
+    }))
+}
+
+fn prepare<T: Texel>(
+    texture: &Texture2d<T>,
+    descriptor: SamplerDescriptor,
+    mipmapped: bool,
+) -> Result<TextureSampler<T>, TextureError> {
+    Ok(if mipmapped {
+        TextureSampler::new(
+            MipChain::generate(texture.clone(), &MipOptions::default())?,
+            descriptor,
+        )
+    } else {
+        TextureSampler::single_level(texture.clone(), descriptor)
+    })
+}
+
+/// A material's texture slot ready to sample: the texture and its uv transform.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Slot {
+    /// Index into [`Textures::list`].
+    pub(crate) texture: usize,
+    /// Which `TEXCOORD_n`.
+    pub(crate) tex_coord: u32,
+    /// `KHR_texture_transform` (identity when absent).
+    pub(crate) transform: Mat3,
+}
+
+/// The prepared textures and what preparing them did.
+#[derive(Debug, Default)]
+pub(crate) struct Textures {
+    pub(crate) list: Vec<PreparedTexture>,
+    index: HashMap<(usize, bool, String), usize>,
+    /// Mip chains built.
+    pub(crate) mip_chains: usize,
+    /// Textures whose filter uses mipmaps but that are never minified: no chain built.
+    pub(crate) mips_skipped: usize,
+    /// Seconds preparing the mipmapped textures (level 0's copy and the chain).
+    pub(crate) mip_seconds: f64,
+}
+
+/// The largest texels-per-pixel ratio (square root of the area ratio) of any on-screen triangle
+/// that samples texture slot `r`, for an image of the given size.
+pub(crate) type MinificationProbe<'a> = &'a dyn Fn(&TextureRef, (u32, u32)) -> f32;
+
+impl Textures {
+    /// The slot for `r` decoded as `space`, preparing its texture on first use; `None` when the
+    /// scene has no decoded image for it.
+    pub(crate) fn slot(
+        &mut self,
+        scene: &Scene,
+        r: &TextureRef,
+        space: ColorSpace,
+        descriptor: SamplerDescriptor,
+        minification: MinificationProbe<'_>,
+    ) -> Result<Option<Slot>, TextureError> {
+        let Some(image) = r.image.and_then(|i| scene.images.get(i)) else {
+            return Ok(None);
+        };
+        let srgb = space == ColorSpace::Srgb;
+        let Some(decoded) = (if srgb { &image.srgb } else { &image.linear }) else {
+            return Ok(None);
+        };
+        // The descriptor has floats, so it is not `Hash`: its debug text is the key.
+        let key = (
+            r.image.unwrap_or(usize::MAX),
+            srgb,
+            format!("{descriptor:?}"),
+        );
+        let texture = if let Some(&i) = self.index.get(&key) {
+            i
+        } else {
+            let size = match decoded.as_ref() {
+                AnyTexture2d::Srgba8(t) => t.size(),
+                AnyTexture2d::Rgba8(t) => t.size(),
+                AnyTexture2d::R8(t) => t.size(),
+                AnyTexture2d::Rgba16f(t) => t.size(),
+                AnyTexture2d::Rgba32f(t) => t.size(),
+                // A format this renderer does not know: drawn untextured.
+                _ => return Ok(None),
+            };
+            let wants_mips = descriptor.lod_max_clamp > 0.0;
+            let mipmapped = wants_mips && minification(r, size) > 1.0;
+            if mipmapped {
+                self.mip_chains += 1;
+            } else if wants_mips {
+                self.mips_skipped += 1;
+            }
+            let preparing = std::time::Instant::now();
+            let prepared = match decoded.as_ref() {
+                AnyTexture2d::Srgba8(t) => {
+                    PreparedTexture::Srgba8(prepare(t, descriptor, mipmapped)?)
+                }
+                AnyTexture2d::Rgba8(t) => {
+                    PreparedTexture::Rgba8(prepare(t, descriptor, mipmapped)?)
+                }
+                AnyTexture2d::R8(t) => PreparedTexture::R8(prepare(t, descriptor, mipmapped)?),
+                AnyTexture2d::Rgba16f(t) => {
+                    PreparedTexture::Rgba16f(prepare(t, descriptor, mipmapped)?)
+                }
+                AnyTexture2d::Rgba32f(t) => {
+                    PreparedTexture::Rgba32f(prepare(t, descriptor, mipmapped)?)
+                }
+                _ => return Ok(None),
+            };
+            if mipmapped {
+                self.mip_seconds += preparing.elapsed().as_secs_f64();
+            }
+            self.list.push(prepared);
+            self.index.insert(key, self.list.len() - 1);
+            self.list.len() - 1
+        };
+        Ok(Some(Slot {
+            texture,
+            tex_coord: r.tex_coord,
+            transform: r.transform,
+        }))
+    }
+}
