@@ -19,11 +19,11 @@ use crate::buffer::{self, BufferDef, Source};
 use crate::camera::{Projection, SceneCamera};
 use crate::image::ImageDef;
 use crate::json::{Obj, as_obj, child};
-use crate::light::{Light, SceneLight};
+use crate::light::{PunctualLight, SceneLight};
 use crate::material::Material;
 use crate::mesh::{Mesh, MeshContext, MeshDef};
 use crate::node::{NodeDef, NodeRefs, check_forest};
-use crate::sampler::Sampler;
+use crate::sampler::SamplerParams;
 use crate::scene::{MeshInstance, Scene, SceneImage, SceneStats, Texture};
 use crate::skin::SkinDef;
 use crate::{LoadOptions, SceneError, glb};
@@ -87,7 +87,7 @@ struct Document {
     textures: Vec<Texture>,
     materials: Vec<Material>,
     cameras: Vec<(Option<String>, Projection)>,
-    lights: Vec<Option<Light>>,
+    lights: Vec<Option<PunctualLight>>,
     meshes: Vec<MeshDef>,
     nodes: Vec<NodeDef>,
     /// (name, root nodes) per scene.
@@ -226,7 +226,7 @@ impl Document {
         }
         let mut samplers = Vec::new();
         for (p, v) in objects(root, "samplers")? {
-            samplers.push(Sampler::parse(as_obj(v, &p)?, warnings)?);
+            samplers.push(SamplerParams::parse(as_obj(v, &p)?, warnings)?);
         }
         let mut images = Vec::new();
         for (p, v) in objects(root, "images")? {
@@ -237,7 +237,7 @@ impl Document {
             let t = as_obj(v, &p)?;
             let sampler = match t.opt_index("sampler", samplers.len(), "sampler")? {
                 Some(s) => samplers.get(s).copied().unwrap_or_default(),
-                None => Sampler::default(),
+                None => SamplerParams::default(),
             };
             let image = t.opt_index("source", images.len(), "image")?;
             if let Some(ext) = t.extension("EXT_texture_webp")? {
@@ -251,7 +251,7 @@ impl Document {
             }
             textures.push(Texture { image, sampler });
         }
-        let texture_info: Vec<(Option<usize>, Sampler)> =
+        let texture_info: Vec<(Option<usize>, SamplerParams)> =
             textures.iter().map(|t| (t.image, t.sampler)).collect();
         let mut materials = Vec::new();
         for (p, v) in objects(root, "materials")? {
@@ -276,7 +276,7 @@ impl Document {
                 ));
             }
             for (p, v) in objects(ext, "lights")? {
-                lights.push(Light::parse(as_obj(v, &p)?, warnings)?);
+                lights.push(PunctualLight::parse(as_obj(v, &p)?, warnings)?);
             }
         }
         let variants = crate::variants::root_variants(root)?;

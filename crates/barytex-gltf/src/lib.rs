@@ -60,11 +60,11 @@ use std::path::Path;
 
 pub use camera::{Projection, SceneCamera};
 pub use error::SceneError;
-pub use light::{Light, LightKind, SceneLight};
+pub use light::{LightKind, PunctualLight, SceneLight};
 pub use limits::SceneLimits;
 pub use material::{AlphaMode, Material, TextureRef};
 pub use mesh::{Mesh, Primitive};
-pub use sampler::{MagFilter, MinFilter, Sampler, Wrap};
+pub use sampler::{MagFilter, MinFilter, SamplerParams, Wrap};
 pub use scene::{MeshInstance, Scene, SceneImage, SceneStats, Texture};
 pub use topology::Topology;
 

@@ -25,7 +25,7 @@ pub enum LightKind {
 
 /// A light definition from the document's `KHR_lights_punctual.lights`.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Light {
+pub struct PunctualLight {
     /// The light's name, if any.
     pub name: Option<String>,
     /// Kind and cone.
@@ -38,7 +38,7 @@ pub struct Light {
     pub range: Option<f32>,
 }
 
-impl Light {
+impl PunctualLight {
     /// Reads `/extensions/KHR_lights_punctual/lights/i`. Returns `None` (with a warning) for an
     /// unknown light type, which the extension allows future versions to add.
     pub(crate) fn parse(
@@ -110,7 +110,7 @@ pub struct SceneLight {
     /// Index into the document's lights.
     pub light_index: usize,
     /// The light.
-    pub light: Light,
+    pub light: PunctualLight,
     /// Light-to-world matrix.
     pub world: Mat4,
     /// World-space position (irrelevant for directional lights).

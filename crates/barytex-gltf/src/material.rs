@@ -6,7 +6,7 @@ use glam::{Mat3, Vec2, Vec3, Vec4};
 
 use crate::SceneError;
 use crate::json::{Obj, as_obj};
-use crate::sampler::Sampler;
+use crate::sampler::SamplerParams;
 
 /// How alpha is interpreted (`alphaMode`).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -32,7 +32,7 @@ pub struct TextureRef {
     /// has no core source (only an extension's, e.g. `EXT_texture_webp`).
     pub image: Option<usize>,
     /// The texture's sampler (defaults when it has none).
-    pub sampler: Sampler,
+    pub sampler: SamplerParams,
     /// Which `TEXCOORD_n` set to read (after any `KHR_texture_transform` override).
     pub tex_coord: u32,
     /// The `KHR_texture_transform` matrix, identity when absent.
@@ -145,7 +145,7 @@ impl Material {
     /// Reads `/materials/i`; `textures` maps a texture index to its image and sampler.
     pub(crate) fn parse(
         obj: Obj<'_>,
-        textures: &[(Option<usize>, Sampler)],
+        textures: &[(Option<usize>, SamplerParams)],
         warnings: &mut Vec<String>,
     ) -> Result<Self, SceneError> {
         let mut m = Self {
@@ -316,7 +316,7 @@ fn unit(obj: Obj<'_>, key: &str, default: f32) -> Result<f32, SceneError> {
 fn texture_ref(
     parent: Obj<'_>,
     key: &str,
-    textures: &[(Option<usize>, Sampler)],
+    textures: &[(Option<usize>, SamplerParams)],
 ) -> Result<Option<TextureRef>, SceneError> {
     let Some(info) = parent.opt_obj(key)? else {
         return Ok(None);

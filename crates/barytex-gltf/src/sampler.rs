@@ -47,10 +47,10 @@ pub enum Wrap {
     MirroredRepeat,
 }
 
-/// A glTF sampler; [`Sampler::default`] is what a texture without a sampler uses (repeat,
+/// A glTF sampler; [`SamplerParams::default`] is what a texture without a sampler uses (repeat,
 /// linear magnification, trilinear minification).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct Sampler {
+pub struct SamplerParams {
     /// Magnification filter.
     pub mag_filter: MagFilter,
     /// Minification filter.
@@ -69,7 +69,7 @@ fn address(wrap: Wrap) -> AddressMode {
     }
 }
 
-impl Sampler {
+impl SamplerParams {
     /// The equivalent `barytex_texture` sampler. Minification without mipmaps
     /// (`NEAREST`/`LINEAR`) samples only level 0, expressed as a LOD clamp of 0.
     #[must_use]

@@ -10,7 +10,7 @@ use crate::camera::SceneCamera;
 use crate::light::SceneLight;
 use crate::material::Material;
 use crate::mesh::Mesh;
-use crate::sampler::Sampler;
+use crate::sampler::SamplerParams;
 
 /// One placement of a mesh in the world. Instances of the same mesh share its decoded data.
 #[derive(Clone, Debug, PartialEq)]
@@ -43,7 +43,7 @@ pub struct Texture {
     /// unsupported extension's).
     pub image: Option<usize>,
     /// The sampler (defaults when the texture has none).
-    pub sampler: Sampler,
+    pub sampler: SamplerParams,
 }
 
 /// An image slot: decoded in the colour spaces the scene's materials need, or not at all.

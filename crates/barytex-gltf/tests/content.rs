@@ -124,7 +124,7 @@ fn samplers_map_the_gl_enums() {
     let d = samplers
         .iter()
         .find(|x| x.wrap_t == Wrap::MirroredRepeat)
-        .map(barytex_gltf::Sampler::to_descriptor);
+        .map(barytex_gltf::SamplerParams::to_descriptor);
     assert!(matches!(
         d,
         Some(d) if d.address_mode_v == barytex_texture::sampler::AddressMode::MirrorRepeat

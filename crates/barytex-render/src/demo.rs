@@ -15,10 +15,10 @@ use glam::{Mat3, Mat4, Quat, Vec3};
 
 use crate::{AntiAliasing, Filter, RenderOptions};
 use barytex_gltf::camera::{Projection, SceneCamera};
-use barytex_gltf::light::{Light, LightKind, SceneLight};
+use barytex_gltf::light::{LightKind, PunctualLight, SceneLight};
 use barytex_gltf::material::{Material, TextureRef};
 use barytex_gltf::mesh::{Mesh, Primitive};
-use barytex_gltf::sampler::{MagFilter, MinFilter, Sampler, Wrap};
+use barytex_gltf::sampler::{MagFilter, MinFilter, SamplerParams, Wrap};
 use barytex_gltf::scene::{MeshInstance, Scene, SceneImage, Texture};
 use barytex_gltf::topology::Topology;
 
@@ -142,8 +142,8 @@ fn sky() -> Option<Arc<AnyTexture2d>> {
     Some(Arc::new(AnyTexture2d::Rgba32f(texture)))
 }
 
-fn repeat_trilinear() -> Sampler {
-    Sampler {
+fn repeat_trilinear() -> SamplerParams {
+    SamplerParams {
         mag_filter: MagFilter::Linear,
         min_filter: MinFilter::LinearMipmapLinear,
         wrap_s: Wrap::Repeat,
@@ -151,7 +151,7 @@ fn repeat_trilinear() -> Sampler {
     }
 }
 
-fn primitive(mesh: barytex_uv::mesh::Mesh, material: usize, uv_scale: f32) -> Primitive {
+fn primitive(mesh: barytex_uv::mesh::TriMesh, material: usize, uv_scale: f32) -> Primitive {
     Primitive {
         positions: mesh.positions,
         normals: Some(mesh.normals),
@@ -199,7 +199,7 @@ fn light(node: usize, kind: LightKind, color: Vec3, intensity: f32, world: Mat4)
     SceneLight {
         node,
         light_index: node,
-        light: Light {
+        light: PunctualLight {
             name: None,
             kind,
             color,
@@ -287,7 +287,7 @@ pub fn demo_scene() -> Scene {
             ..Material::default()
         },
     ];
-    let empty = barytex_uv::mesh::Mesh {
+    let empty = barytex_uv::mesh::TriMesh {
         positions: Vec::new(),
         normals: Vec::new(),
         tangents: Vec::new(),

@@ -1,4 +1,4 @@
-//! The reference renderer: a flattened [`Scene`](barytex_gltf::Scene) (loaded by barytex-gltf, or
+//! The reference renderer: a flattened [`Scene`] (loaded by barytex-gltf, or
 //! the built-in [`demo`] scene) drawn by barytex-raster with barytex-texture's
 //! filters — cameras (the scene's or the automatic one), glTF materials (base colour, vertex
 //! colours, alpha modes, emission, occlusion, unlit), punctual lights with Blinn–Phong, and
@@ -237,7 +237,7 @@ fn world_tangents(
         } else {
             primitive.tex_coords0.as_ref()
         }?;
-        let mesh = barytex_uv::mesh::Mesh {
+        let mesh = barytex_uv::mesh::TriMesh {
             positions: primitive.positions.clone(),
             normals: primitive.normals.clone()?,
             tangents: Vec::new(),
@@ -325,7 +325,7 @@ fn highlight_scene(
     camera: &RenderCamera,
     lights: &[WorldLight],
     m: &ShaderMaterial,
-) -> barytex_shade::Scene {
+) -> barytex_shade::ShadeContext {
     let shininess = material_shader::shininess(m.roughness);
     let base = m.base_color.truncate();
     let specular = Vec3::splat(0.04).lerp(base, m.metallic)
@@ -357,7 +357,7 @@ fn highlight_scene(
             },
         })
         .collect();
-    barytex_shade::Scene {
+    barytex_shade::ShadeContext {
         camera: barytex_shade::Camera {
             eye: camera.eye,
             view: camera.view,
@@ -365,7 +365,7 @@ fn highlight_scene(
         },
         lights,
         ambient: Vec3::ZERO,
-        material: barytex_shade::Material {
+        material: barytex_shade::PhongMaterial {
             emission: Vec3::ZERO,
             ambient: Vec3::ZERO,
             diffuse: Vec3::ZERO,

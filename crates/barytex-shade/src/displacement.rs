@@ -9,7 +9,7 @@
 
 use std::collections::HashMap;
 
-use barytex_uv::Mesh;
+use barytex_uv::TriMesh;
 use glam::{Vec2, Vec3, Vec4};
 
 use crate::perturb::HeightField;
@@ -50,12 +50,12 @@ pub enum Seams {
 /// ```
 #[must_use]
 pub fn displace(
-    mesh: &Mesh,
+    mesh: &TriMesh,
     height: &dyn HeightField,
     scale: f32,
     level: u32,
     seams: Seams,
-) -> Mesh {
+) -> TriMesh {
     let fine = tessellate(mesh, level.clamp(1, 64));
     let offsets: Vec<Vec3> = (0..fine.positions.len())
         .map(|i| {
@@ -123,7 +123,7 @@ fn position_groups(positions: &[Vec3]) -> Vec<Vec<usize>> {
 /// Uniform subdivision of every triangle into `level²`; attributes interpolated linearly
 /// (normals renormalized). A point on a shared edge is computed from the edge's endpoints in a
 /// fixed order (lower vertex index first), so both neighbours get the same bits.
-fn tessellate(mesh: &Mesh, level: u32) -> Mesh {
+fn tessellate(mesh: &TriMesh, level: u32) -> TriMesh {
     let n = mesh.positions.len();
     let get = |i: u32| -> (Vec3, Vec3, Vec2, Vec4) {
         let i = i as usize;
@@ -134,7 +134,7 @@ fn tessellate(mesh: &Mesh, level: u32) -> Mesh {
             mesh.tangents.get(i).copied().unwrap_or(Vec4::ZERO),
         )
     };
-    let mut out = Mesh::default();
+    let mut out = TriMesh::default();
     let k = level;
     for tri in mesh
         .indices

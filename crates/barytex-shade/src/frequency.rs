@@ -11,11 +11,11 @@
 
 use barytex_interp::{NormalInterpolation, interpolate_normal};
 use barytex_raster::{Fragment, Shader};
-use barytex_uv::Mesh;
+use barytex_uv::TriMesh;
 use glam::{Vec3, Vec4};
 
-use crate::Scene;
-use crate::scene::{ShadeVertex, valid_triangles};
+use crate::ShadeContext;
+use crate::context::{ShadeVertex, valid_triangles};
 
 /// A position with a colour already computed (flat shading, precomputed Gouraud).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -32,7 +32,7 @@ pub struct ColouredVertex {
 #[derive(Clone, Copy, Debug)]
 pub struct ColouredShader<'a> {
     /// The scene (only its camera is read).
-    pub scene: &'a Scene,
+    pub scene: &'a ShadeContext,
 }
 
 impl Shader for ColouredShader<'_> {
@@ -51,14 +51,14 @@ impl Shader for ColouredShader<'_> {
 /// its own colour. Degenerate triangles and those with an index out of range are left out.
 ///
 /// ```
-/// use barytex_shade::{flat_vertices, Camera, Light, Material, Scene, ViewVector};
+/// use barytex_shade::{flat_vertices, Camera, Light, PhongMaterial, ShadeContext, ViewVector};
 /// use glam::Vec3;
 ///
-/// let scene = Scene {
+/// let scene = ShadeContext {
 ///     camera: Camera::look_at(Vec3::Z * 3.0, Vec3::ZERO, Vec3::Y, 1.0, 1.0, 0.1, 10.0).expect("ok"),
 ///     lights: vec![Light::Directional { direction: -Vec3::Z, color: Vec3::ONE }],
 ///     ambient: Vec3::ZERO,
-///     material: Material::default(),
+///     material: PhongMaterial::default(),
 ///     view: ViewVector::Local,
 /// };
 /// let sphere = barytex_uv::mesh::sphere(8, 4).expect("valid");
@@ -68,7 +68,7 @@ impl Shader for ColouredShader<'_> {
 /// assert!(vertices.chunks(3).all(|t| t[0].colour == t[1].colour && t[1].colour == t[2].colour));
 /// ```
 #[must_use]
-pub fn flat_vertices(mesh: &Mesh, scene: &Scene) -> (Vec<ColouredVertex>, Vec<u32>) {
+pub fn flat_vertices(mesh: &TriMesh, scene: &ShadeContext) -> (Vec<ColouredVertex>, Vec<u32>) {
     let mut vertices = Vec::with_capacity(mesh.indices.len() * 3);
     for tri in valid_triangles(mesh) {
         let p = tri.map(|i| mesh.positions[i as usize]);
@@ -87,7 +87,7 @@ pub fn flat_vertices(mesh: &Mesh, scene: &Scene) -> (Vec<ColouredVertex>, Vec<u3
 #[derive(Clone, Copy, Debug)]
 pub struct GouraudShader<'a> {
     /// Camera, lights, material.
-    pub scene: &'a Scene,
+    pub scene: &'a ShadeContext,
 }
 
 impl Shader for GouraudShader<'_> {
@@ -109,7 +109,7 @@ impl Shader for GouraudShader<'_> {
 #[derive(Clone, Copy, Debug)]
 pub struct PhongShader<'a> {
     /// Camera, lights, material.
-    pub scene: &'a Scene,
+    pub scene: &'a ShadeContext,
     /// Whether to renormalize the interpolated normal (seed 003). `false` is the "pre-normalized
     /// normals" shortcut taken too far: interpolated unit normals are shorter than 1 inside a
     /// triangle, which darkens the diffuse term and blunts the highlight (measured in
@@ -120,7 +120,7 @@ pub struct PhongShader<'a> {
 impl<'a> PhongShader<'a> {
     /// The exact variant (renormalizing).
     #[must_use]
-    pub fn new(scene: &'a Scene) -> Self {
+    pub fn new(scene: &'a ShadeContext) -> Self {
         Self {
             scene,
             renormalize: true,
@@ -159,7 +159,7 @@ pub struct SlerpVertex {
 
 /// Prepares [`SlerpPhongShader`]: unwelded triangles and their unit vertex normals.
 #[must_use]
-pub fn slerp_vertices(mesh: &Mesh) -> (Vec<SlerpVertex>, Vec<u32>, Vec<[Vec3; 3]>) {
+pub fn slerp_vertices(mesh: &TriMesh) -> (Vec<SlerpVertex>, Vec<u32>, Vec<[Vec3; 3]>) {
     let mut vertices = Vec::with_capacity(mesh.indices.len() * 3);
     let mut table = Vec::with_capacity(mesh.indices.len());
     for tri in valid_triangles(mesh) {
@@ -203,7 +203,7 @@ pub fn slerp_triangle_normal(n: [Vec3; 3], b: Vec3) -> Vec3 {
 #[derive(Clone, Copy, Debug)]
 pub struct SlerpPhongShader<'a> {
     /// Camera, lights, material.
-    pub scene: &'a Scene,
+    pub scene: &'a ShadeContext,
     /// The normal table from [`slerp_vertices`].
     pub normals: &'a [[Vec3; 3]],
 }
@@ -230,7 +230,7 @@ impl Shader for SlerpPhongShader<'_> {
 #[derive(Clone, Copy, Debug)]
 pub struct ReferenceShader<'a, F> {
     /// Camera, lights, material.
-    pub scene: &'a Scene,
+    pub scene: &'a ShadeContext,
     /// The exact unit normal at a surface point.
     pub normal: F,
 }

@@ -5,11 +5,11 @@
 //! along the edges and inside, where a highlight can hide between vertices that miss it.
 
 use barytex_raster::{Fragment, Shader};
-use barytex_uv::Mesh;
+use barytex_uv::TriMesh;
 use glam::{Mat3, Vec3, Vec4};
 
-use crate::Scene;
-use crate::scene::valid_triangles;
+use crate::ShadeContext;
+use crate::context::valid_triangles;
 
 /// The five-stage highlight test, after one pre-check: a triangle that faces away from the eye
 /// (its geometric normal points away from the camera) is culled by the rasterizer, so it is not
@@ -71,14 +71,14 @@ impl HighlightTest {
     /// Runs the test on one triangle (world-space positions and unit vertex normals).
     ///
     /// ```
-    /// use barytex_shade::{Camera, HighlightTest, HighlightVerdict, Light, Material, Scene, ViewVector};
+    /// use barytex_shade::{Camera, HighlightTest, HighlightVerdict, Light, PhongMaterial, ShadeContext, ViewVector};
     /// use glam::Vec3;
     ///
-    /// let scene = Scene {
+    /// let scene = ShadeContext {
     ///     camera: Camera::look_at(Vec3::Z * 5.0, Vec3::ZERO, Vec3::Y, 1.0, 1.0, 0.1, 10.0).expect("ok"),
     ///     lights: vec![Light::Directional { direction: -Vec3::Z, color: Vec3::ONE }],
     ///     ambient: Vec3::ZERO,
-    ///     material: Material { shininess: 200.0, ..Material::default() },
+    ///     material: PhongMaterial { shininess: 200.0, ..PhongMaterial::default() },
     ///     view: ViewVector::Local,
     /// };
     /// // A big triangle facing the eye and the light, whose vertex normals all miss the
@@ -89,7 +89,7 @@ impl HighlightTest {
     /// assert_eq!(HighlightTest::default().run(&scene, p, n), HighlightVerdict::Interior);
     /// ```
     #[must_use]
-    pub fn run(&self, scene: &Scene, p: [Vec3; 3], n: [Vec3; 3]) -> HighlightVerdict {
+    pub fn run(&self, scene: &ShadeContext, p: [Vec3; 3], n: [Vec3; 3]) -> HighlightVerdict {
         let m = &scene.material;
         if m.specular.max_element() <= 0.0
             || matches!(m.lobe, crate::Specular::None)
@@ -188,8 +188,8 @@ pub struct HybridStats {
 /// culls) and builds the unwelded vertices of [`HybridShader`].
 #[must_use]
 pub fn hybrid_vertices(
-    mesh: &Mesh,
-    scene: &Scene,
+    mesh: &TriMesh,
+    scene: &ShadeContext,
     test: &HighlightTest,
 ) -> (Vec<HybridVertex>, Vec<u32>, HybridStats) {
     let colours: Vec<Vec3> = (0..mesh.positions.len())
@@ -243,7 +243,7 @@ pub fn hybrid_vertices(
 #[derive(Clone, Copy, Debug)]
 pub struct HybridShader<'a> {
     /// Camera, lights, material.
-    pub scene: &'a Scene,
+    pub scene: &'a ShadeContext,
 }
 
 impl Shader for HybridShader<'_> {

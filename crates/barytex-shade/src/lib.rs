@@ -4,8 +4,8 @@
 //! | concept | items |
 //! |---|---|
 //! | lights | [`Light`] (directional, point, spot), [`SpotShape`] (Warn's `(cos α)^p`, glTF cones), [`Attenuation`] (`min(1/(c1 + c2 d + c3 d²), 1)`) |
-//! | illumination models | [`lambert`], [`phong_specular`], [`blinn_phong_specular`], [`Material`], [`Lighting`], [`Specular`] |
-//! | camera and scene | [`Camera`] ([`camera::look_at`], [`camera::perspective`]), [`Scene`], [`ViewVector`], [`ShadeVertex`], [`mesh_vertices`] |
+//! | illumination models | [`lambert`], [`phong_specular`], [`blinn_phong_specular`], [`PhongMaterial`], [`Lighting`], [`Specular`] |
+//! | camera and scene | [`Camera`] ([`camera::look_at`], [`camera::perspective`]), [`ShadeContext`], [`ViewVector`], [`ShadeVertex`], [`mesh_vertices`] |
 //! | normals | [`face_normal`], [`vertex_normals`] ([`NormalWeighting`]: uniform, area, angle) |
 //! | shading frequencies | flat ([`flat_vertices`] + [`ColouredShader`]), [`GouraudShader`], [`PhongShader`] (or [`SlerpPhongShader`]), Gouraud + Phong with the H-test ([`HighlightTest`], [`hybrid_vertices`], [`HybridShader`]), the exact-normal [`ReferenceShader`] |
 //! | speed-ups (seed 004) | [`ViewVector::Constant`], [`PhongShader`] without renormalization, [`precomputed_vertex_colours`], fast approximate Phong ([`fast_phong_vertices`], [`FastPhongShader`], [`quadratic_interpolate`]) |
@@ -22,12 +22,12 @@
 //! input: each function documents the value it returns instead, and no term is ever negative.
 //!
 //! ```
-//! use barytex_shade::{Attenuation, Light, Material};
+//! use barytex_shade::{Attenuation, Light, PhongMaterial};
 //! use glam::Vec3;
 //!
 //! let lamp = Light::Point { position: Vec3::new(0.0, 0.0, 2.0), color: Vec3::ONE,
 //!     attenuation: Attenuation::NONE };
-//! let lit = Material::default().shade(Vec3::ZERO, Vec3::Z, Vec3::Z, &[lamp], Vec3::splat(0.1));
+//! let lit = PhongMaterial::default().shade(Vec3::ZERO, Vec3::Z, Vec3::Z, &[lamp], Vec3::splat(0.1));
 //! // Ambient 0.07, diffuse 0.7, and the full highlight 0.3: the eye sits on the mirror ray.
 //! assert!((lit.total() - Vec3::splat(1.07)).length() < 1e-6);
 //! ```
@@ -36,6 +36,7 @@
 pub mod atmosphere;
 mod attenuation;
 pub mod camera;
+mod context;
 mod displacement;
 mod environment;
 mod frequency;
@@ -45,13 +46,13 @@ mod model;
 mod normals;
 mod octree;
 mod perturb;
-mod scene;
 mod speedups;
 mod texturing;
 
 pub use atmosphere::{DepthCue, ExponentialFog, FogDistance, HeightFog};
 pub use attenuation::Attenuation;
 pub use camera::Camera;
+pub use context::{ShadeContext, ShadeVertex, ViewVector, mesh_vertices};
 pub use displacement::{Seams, displace};
 pub use environment::{DirectionSampler, Environment, reflection_direction};
 pub use frequency::{
@@ -62,14 +63,13 @@ pub use highlight::{
     HighlightTest, HighlightVerdict, HybridShader, HybridStats, HybridVertex, hybrid_vertices,
 };
 pub use light::{Light, LightSample, SpotShape};
-pub use model::{Lighting, Material, Specular, blinn_phong_specular, lambert, phong_specular};
+pub use model::{Lighting, PhongMaterial, Specular, blinn_phong_specular, lambert, phong_specular};
 pub use normals::{NormalWeighting, face_normal, vertex_normals};
 pub use octree::{
     CoverageQuadtree, FrontToBackStats, Octree, Voxel, child_order, render_back_to_front,
     render_depth_tested, render_front_to_back,
 };
 pub use perturb::{HeightField, bump_normal, decode_normal, generate_tangents, perturb_normal};
-pub use scene::{Scene, ShadeVertex, ViewVector, mesh_vertices};
 pub use speedups::{
     FastPhongNodes, FastPhongShader, FastPhongVertex, fast_phong_vertices,
     precomputed_vertex_colours, quadratic_interpolate,

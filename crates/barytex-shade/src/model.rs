@@ -1,7 +1,7 @@
 //! The seed's local illumination models as pure functions (seed 004, seed 001): emission
 //! `I = k_i`, ambient `I = I_a k_a`, Lambert's diffuse `I = I_p k_d (N·L)`, Phong's specular
 //! `I = I_p W(θ) (cos α)^n` with `W(θ) = k_s`, and Blinn's half-vector variant — and a
-//! [`Material`] that sums them over lights. Usable by the rasterizer's shaders and by a ray
+//! [`PhongMaterial`] that sums them over lights. Usable by the rasterizer's shaders and by a ray
 //! tracer alike: everything is in one space the caller chooses (world space in this crate's
 //! shaders).
 
@@ -70,7 +70,7 @@ pub(crate) fn power(c: f32, shininess: f32) -> f32 {
     c.powf(clamp_positive(shininess))
 }
 
-/// Which specular lobe a [`Material`] uses.
+/// Which specular lobe a [`PhongMaterial`] uses.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Specular {
     /// Phong's `(R·V)^n` (the seed's model).
@@ -97,7 +97,7 @@ impl Specular {
 
 /// Surface reflectances (linear light, per channel, usually in `[0, 1]`).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Material {
+pub struct PhongMaterial {
     /// `k_i`: light the surface emits by itself.
     pub emission: Vec3,
     /// `k_a`: reflectance for the ambient light `I_a`.
@@ -112,7 +112,7 @@ pub struct Material {
     pub lobe: Specular,
 }
 
-impl Default for Material {
+impl Default for PhongMaterial {
     /// White plastic: `k_a = k_d = 0.7`, `k_s = 0.3`, `n = 32`, Phong lobe, no emission.
     fn default() -> Self {
         Self {
@@ -147,7 +147,7 @@ impl Lighting {
     }
 }
 
-impl Material {
+impl PhongMaterial {
     /// Lights the point `p` with unit normal `n` seen along the unit vector `v` (from the point
     /// to the eye) by `lights` and the ambient intensity `ambient`:
     /// `I = k_i + I_a k_a + Σ I_p (k_d (N·L) + k_s (cos α)^n)`.
@@ -158,10 +158,10 @@ impl Material {
     /// reflectances and intensities no term is negative.
     ///
     /// ```
-    /// use barytex_shade::{Light, Material, Specular};
+    /// use barytex_shade::{Light, PhongMaterial, Specular};
     /// use glam::Vec3;
     ///
-    /// let m = Material { specular: Vec3::ZERO, lobe: Specular::None, ..Material::default() };
+    /// let m = PhongMaterial { specular: Vec3::ZERO, lobe: Specular::None, ..PhongMaterial::default() };
     /// let sun = Light::Directional { direction: -Vec3::Y, color: Vec3::ONE };
     /// // Lit head-on: k_d·I_p; no ambient light.
     /// let c = m.shade(Vec3::ZERO, Vec3::Y, Vec3::Y, &[sun], Vec3::ZERO);

@@ -2,7 +2,7 @@
 //! as RGB) and bump maps (a height field whose slope tilts the normal). Both need the normal per
 //! pixel — Phong shading, not Gouraud.
 
-use barytex_uv::Mesh;
+use barytex_uv::TriMesh;
 use glam::{Vec2, Vec3, Vec4};
 
 /// A normal-map texel (linear RGB in `[0, 1]`) as a tangent-space vector: `2c − 1`.
@@ -116,7 +116,7 @@ impl<F: Fn(Vec2) -> f32> HeightField for F {
 /// assert_eq!(tangents.len(), sphere.positions.len());
 /// ```
 #[must_use]
-pub fn generate_tangents(mesh: &Mesh) -> Option<Vec<Vec4>> {
+pub fn generate_tangents(mesh: &TriMesh) -> Option<Vec<Vec4>> {
     let n = mesh.positions.len();
     if mesh.indices.is_empty()
         || mesh.normals.len() != n
@@ -126,7 +126,7 @@ pub fn generate_tangents(mesh: &Mesh) -> Option<Vec<Vec4>> {
         return None;
     }
     struct Geometry<'a> {
-        mesh: &'a Mesh,
+        mesh: &'a TriMesh,
         tangents: Vec<Vec4>,
     }
     impl Geometry<'_> {

@@ -13,24 +13,24 @@
 //!   and a power per light.
 
 use barytex_raster::{Fragment, Shader};
-use barytex_uv::Mesh;
+use barytex_uv::TriMesh;
 use glam::{Vec3, Vec4};
 
-use crate::Scene;
+use crate::ShadeContext;
+use crate::context::valid_triangles;
 use crate::frequency::ColouredVertex;
-use crate::scene::valid_triangles;
 
 /// Gouraud vertex colours computed once (static lights and eye): drawing them costs no lighting
 /// at all. Exact while nothing moves; when the eye moves the specular term is stale.
 ///
 /// ```
-/// use barytex_shade::{precomputed_vertex_colours, Camera, Light, Material, Scene, ViewVector};
+/// use barytex_shade::{precomputed_vertex_colours, Camera, Light, PhongMaterial, ShadeContext, ViewVector};
 /// use glam::Vec3;
 ///
-/// let scene = Scene {
+/// let scene = ShadeContext {
 ///     camera: Camera::look_at(Vec3::Z * 3.0, Vec3::ZERO, Vec3::Y, 1.0, 1.0, 0.1, 10.0).expect("ok"),
 ///     lights: vec![Light::Directional { direction: -Vec3::Z, color: Vec3::ONE }],
-///     ambient: Vec3::ZERO, material: Material::default(), view: ViewVector::Local,
+///     ambient: Vec3::ZERO, material: PhongMaterial::default(), view: ViewVector::Local,
 /// };
 /// let sphere = barytex_uv::mesh::sphere(8, 4).expect("valid");
 /// let (vertices, indices) = precomputed_vertex_colours(&sphere, &scene);
@@ -38,7 +38,10 @@ use crate::scene::valid_triangles;
 /// assert_eq!(indices.len(), 3 * sphere.indices.len());
 /// ```
 #[must_use]
-pub fn precomputed_vertex_colours(mesh: &Mesh, scene: &Scene) -> (Vec<ColouredVertex>, Vec<u32>) {
+pub fn precomputed_vertex_colours(
+    mesh: &TriMesh,
+    scene: &ShadeContext,
+) -> (Vec<ColouredVertex>, Vec<u32>) {
     let vertices = (0..mesh.positions.len())
         .map(|i| {
             let n = mesh.normals.get(i).copied().unwrap_or(Vec3::ZERO);
@@ -83,8 +86,8 @@ pub struct FastPhongVertex {
 /// vertices and indices.
 #[must_use]
 pub fn fast_phong_vertices(
-    mesh: &Mesh,
-    scene: &Scene,
+    mesh: &TriMesh,
+    scene: &ShadeContext,
 ) -> (Vec<FastPhongVertex>, Vec<u32>, Vec<FastPhongNodes>) {
     let key = scene.lights.first();
     let rest = scene.lights.get(1..).unwrap_or(&[]);
@@ -176,7 +179,7 @@ where
 #[derive(Clone, Copy, Debug)]
 pub struct FastPhongShader<'a> {
     /// The scene (its camera and material are read).
-    pub scene: &'a Scene,
+    pub scene: &'a ShadeContext,
     /// The node table from [`fast_phong_vertices`].
     pub nodes: &'a [FastPhongNodes],
 }

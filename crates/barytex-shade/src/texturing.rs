@@ -10,7 +10,7 @@ use glam::{Vec2, Vec3, Vec4};
 
 use crate::environment::{Environment, reflection_direction};
 use crate::perturb::{HeightField, bump_normal, decode_normal, perturb_normal};
-use crate::{Scene, ShadeVertex};
+use crate::{ShadeContext, ShadeVertex};
 
 /// What a colour texture does.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -39,7 +39,7 @@ pub enum TextureUse {
 #[derive(Clone, Copy)]
 pub struct SurfaceShader<'a> {
     /// Camera, lights, material (textures override parts of it).
-    pub scene: &'a Scene,
+    pub scene: &'a ShadeContext,
     /// A colour texture and its use.
     pub colour: Option<(&'a (dyn Sampler + Sync), TextureUse)>,
     /// A tangent-space normal map (linear RGB).
@@ -66,15 +66,15 @@ impl<'a> SurfaceShader<'a> {
     ///
     /// ```
     /// use barytex_raster::{draw, Framebuffer, PipelineState};
-    /// use barytex_shade::{mesh_vertices, Camera, Light, Material, Scene, SurfaceShader, TextureUse, ViewVector};
+    /// use barytex_shade::{mesh_vertices, Camera, Light, PhongMaterial, ShadeContext, SurfaceShader, TextureUse, ViewVector};
     /// use barytex_texture::{procedural::Checkerboard, Limits};
     /// use glam::{Vec3, Vec4};
     ///
-    /// let scene = Scene {
+    /// let scene = ShadeContext {
     ///     camera: Camera::look_at(Vec3::Z * 3.0, Vec3::ZERO, Vec3::Y, 1.0, 1.0, 0.1, 10.0).expect("ok"),
     ///     lights: vec![Light::Directional { direction: -Vec3::Z, color: Vec3::ONE }],
     ///     ambient: Vec3::splat(0.1),
-    ///     material: Material::default(),
+    ///     material: PhongMaterial::default(),
     ///     view: ViewVector::Local,
     /// };
     /// let checker = Checkerboard { even: Vec4::ONE, odd: Vec4::new(0.1, 0.1, 0.1, 1.0), checks: 8.0 };
@@ -87,7 +87,7 @@ impl<'a> SurfaceShader<'a> {
     /// # Ok::<(), barytex_texture::TextureError>(())
     /// ```
     #[must_use]
-    pub fn new(scene: &'a Scene) -> Self {
+    pub fn new(scene: &'a ShadeContext) -> Self {
         Self {
             scene,
             colour: None,

@@ -8,7 +8,7 @@ use barytex_shade::{ReferenceShader, Seams, displace, mesh_vertices};
 use common::{render, scene};
 use glam::{Vec2, Vec3};
 
-fn distinct_positions(mesh: &barytex_uv::Mesh) -> usize {
+fn distinct_positions(mesh: &barytex_uv::TriMesh) -> usize {
     mesh.positions
         .iter()
         .map(|p| (*p + Vec3::ZERO).to_array().map(f32::to_bits))
@@ -31,7 +31,7 @@ fn zero_height_keeps_the_surface_and_shares_edge_points_exactly() {
 }
 
 /// Pairs of seam copies (u = 0 and u = 1 at the same v) and their largest gap.
-fn seam_gap(mesh: &barytex_uv::Mesh) -> (usize, f32) {
+fn seam_gap(mesh: &barytex_uv::TriMesh) -> (usize, f32) {
     let mut pairs = 0;
     let mut gap = 0.0f32;
     for (i, a) in mesh.uvs.iter().enumerate() {
@@ -75,7 +75,7 @@ fn displacement_changes_the_silhouette() {
         4,
         Seams::Weld,
     );
-    let coverage = |mesh: &barytex_uv::Mesh| {
+    let coverage = |mesh: &barytex_uv::TriMesh| {
         let (v, i) = mesh_vertices(mesh);
         let fb = render(
             &ReferenceShader {

@@ -8,13 +8,13 @@ use barytex_shade::{
     ColouredShader, GouraudShader, HighlightTest, HybridShader, NormalWeighting, PhongShader,
     flat_vertices, hybrid_vertices, mesh_vertices, vertex_normals,
 };
-use barytex_shade::{Material, Scene};
+use barytex_shade::{PhongMaterial, ShadeContext};
 use common::{SIZE, error, render, scene};
 use glam::Vec3;
 
 /// The exact unit sphere, ray traced through the pixel centres and lit with its exact point and
 /// normal.
-fn traced_sphere(scene: &Scene) -> Framebuffer {
+fn traced_sphere(scene: &ShadeContext) -> Framebuffer {
     let inverse = scene.camera.view_projection().inverse();
     let mut pixels = Vec::new();
     for y in 0..SIZE {
@@ -69,8 +69,8 @@ fn error_ordering_flat_gouraud_hybrid_phong() {
     // The hybrid matches Phong within a small error while running Phong on a minority of
     // triangles: the highlight is where the error was. What is left is Gouraud's diffuse error
     // (the H-test only looks for highlights) and sub-threshold specular.
-    let matte = Scene {
-        material: Material {
+    let matte = ShadeContext {
+        material: PhongMaterial {
             specular: Vec3::ZERO,
             ..scene.material
         },
@@ -233,8 +233,8 @@ fn slerp_triangle_normal_corners_and_edges() {
 /// triangles" — a quad split along one diagonal or the other interpolates different colours.
 #[test]
 fn quads_shade_differently_when_split_along_the_other_diagonal() {
-    use barytex_shade::{ColouredVertex, Scene};
-    let scene: Scene = scene();
+    use barytex_shade::{ColouredVertex, ShadeContext};
+    let scene: ShadeContext = scene();
     let quad = [
         Vec3::new(-0.8, -0.8, 0.0),
         Vec3::new(0.8, -0.8, 0.0),
@@ -301,8 +301,8 @@ fn hostile_meshes_never_panic() {
 
 #[test]
 fn h_test_stages() {
-    use barytex_shade::{Camera, HighlightVerdict, Light, Scene, Specular, ViewVector};
-    let scene = Scene {
+    use barytex_shade::{Camera, HighlightVerdict, Light, ShadeContext, Specular, ViewVector};
+    let scene = ShadeContext {
         camera: Camera::look_at(Vec3::Z * 5.0, Vec3::ZERO, Vec3::Y, 1.0, 1.0, 0.1, 10.0)
             .expect("regular"),
         lights: vec![Light::Directional {
@@ -310,9 +310,9 @@ fn h_test_stages() {
             color: Vec3::ONE,
         }],
         ambient: Vec3::ZERO,
-        material: Material {
+        material: PhongMaterial {
             shininess: 400.0,
-            ..Material::default()
+            ..PhongMaterial::default()
         },
         view: ViewVector::Constant(Vec3::Z),
     };
@@ -338,8 +338,8 @@ fn h_test_stages() {
     ];
     assert_eq!(test.run(&scene, p, away), HighlightVerdict::None);
     // A matte material: stage 1.
-    let matte = Scene {
-        material: Material {
+    let matte = ShadeContext {
+        material: PhongMaterial {
             lobe: Specular::None,
             ..scene.material
         },

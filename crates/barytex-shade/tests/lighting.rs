@@ -2,7 +2,7 @@
 
 use barytex_shade::atmosphere::blend;
 use barytex_shade::{
-    Attenuation, DepthCue, ExponentialFog, FogDistance, HeightFog, Light, Material, Specular,
+    Attenuation, DepthCue, ExponentialFog, FogDistance, HeightFog, Light, PhongMaterial, Specular,
     SpotShape, blinn_phong_specular, lambert, phong_specular,
 };
 use glam::{DVec3, Vec3};
@@ -76,7 +76,7 @@ fn light() -> impl Strategy<Value = Light> {
     ]
 }
 
-fn material() -> impl Strategy<Value = Material> {
+fn material() -> impl Strategy<Value = PhongMaterial> {
     (
         colour(),
         colour(),
@@ -86,7 +86,7 @@ fn material() -> impl Strategy<Value = Material> {
         0..3u8,
     )
         .prop_map(
-            |(emission, ambient, diffuse, specular, shininess, lobe)| Material {
+            |(emission, ambient, diffuse, specular, shininess, lobe)| PhongMaterial {
                 emission,
                 ambient,
                 diffuse,
@@ -229,10 +229,10 @@ fn phong_peak_is_on_the_mirror_ray() {
 
 #[test]
 fn ambient_and_emission() {
-    let m = Material {
+    let m = PhongMaterial {
         emission: Vec3::new(0.1, 0.0, 0.0),
         ambient: Vec3::splat(0.5),
-        ..Material::default()
+        ..PhongMaterial::default()
     };
     // I = k_i + I_a k_a, whatever the geometry (even a NaN normal).
     for n in [Vec3::Y, Vec3::NAN, Vec3::ZERO] {

@@ -10,7 +10,7 @@ use barytex_shade::{
 use common::{error, render, scene};
 use glam::Vec3;
 
-fn sphere() -> barytex_uv::Mesh {
+fn sphere() -> barytex_uv::TriMesh {
     barytex_uv::mesh::sphere(24, 12).expect("valid")
 }
 

@@ -33,7 +33,7 @@
 
 use glam::{DMat2, DVec2, Vec2, Vec3};
 
-use crate::mesh::Mesh;
+use crate::mesh::TriMesh;
 
 /// The singular values `(σ1, σ2)`, `σ1 ≥ σ2 ≥ 0`, of a 2 × 2 matrix, in closed form (Blinn's):
 /// with the matrix split into a similarity and an anti-similarity part,
@@ -205,7 +205,7 @@ impl MeshDistortion {
     /// assert!((d.area_max - 1.0).abs() < 1e-6 && (d.angle_max - 1.0).abs() < 1e-6);
     /// ```
     #[must_use]
-    pub fn of(mesh: &Mesh) -> Option<Self> {
+    pub fn of(mesh: &TriMesh) -> Option<Self> {
         let measured: Vec<TriangleDistortion> = mesh
             .indices
             .iter()

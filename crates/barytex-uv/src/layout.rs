@@ -25,7 +25,7 @@ use tiny_skia::{
 };
 
 use crate::UvError;
-use crate::mesh::Mesh;
+use crate::mesh::TriMesh;
 
 /// The largest picture side [`draw_uv_layout`] draws (64 Mi pixels, 256 MiB).
 pub const MAX_LAYOUT_SIZE: u32 = 8192;
@@ -120,7 +120,7 @@ fn weld_key(p: Vec3) -> [u32; 3] {
 /// assert_eq!(edges.wire.len(), 16 - 8);
 /// ```
 #[must_use]
-pub fn uv_edges(mesh: &Mesh) -> UvEdges {
+pub fn uv_edges(mesh: &TriMesh) -> UvEdges {
     // Per welded edge (keys in order), the uvs each triangle gives its two ends (in key order).
     type Key = [u32; 3];
     let mut edges: HashMap<(Key, Key), Vec<[Vec2; 2]>> = HashMap::new();
@@ -180,7 +180,7 @@ fn premultiplied(color: Color) -> PremultipliedColorU8 {
 /// assert!(draw_uv_layout(&cube, 100_000, &LayoutOptions::default()).is_err());
 /// ```
 pub fn draw_uv_layout(
-    mesh: &Mesh,
+    mesh: &TriMesh,
     size: u32,
     options: &LayoutOptions<'_>,
 ) -> Result<Pixmap, UvError> {

@@ -8,7 +8,7 @@
 //! | object-space mappings | [`mappings`]: [`Planar`](mappings::Planar), [`BoxMapping`](mappings::BoxMapping), [`Cylindrical`](mappings::Cylindrical), [`Spherical`](mappings::Spherical), [`Torus`](mappings::Torus) |
 //! | seam repair | [`seam::repair_seam`], [`seam::repair_sphere_triangle`] |
 //! | environment maps | [`environment`] |
-//! | parametric meshes | [`mesh`]: [`Mesh`], [`mesh::plane`], [`mesh::cube`], [`mesh::cylinder`], [`mesh::sphere`], [`mesh::torus`] |
+//! | parametric meshes | [`mesh`]: [`TriMesh`], [`mesh::plane`], [`mesh::cube`], [`mesh::cylinder`], [`mesh::sphere`], [`mesh::torus`] |
 //! | distortion | [`distortion`]: [`MeshDistortion`], [`TriangleDistortion`], [`distortion::singular_values`] |
 //! | uv-layout pictures (feature `layout`) | `layout::draw_uv_layout`, `layout::uv_edges` |
 //!
@@ -54,4 +54,4 @@ pub mod seam;
 pub use distortion::{MeshDistortion, TriangleDistortion};
 pub use error::UvError;
 pub use mapping::{SurfacePoint, UvJacobian, UvMapping, UvSample};
-pub use mesh::{Mesh, MeshDefect};
+pub use mesh::{MeshDefect, TriMesh};

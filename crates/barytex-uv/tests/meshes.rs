@@ -6,13 +6,13 @@
 use std::collections::HashMap;
 
 use barytex_uv::UvError;
-use barytex_uv::mesh::{self, MAX_VERTICES, Mesh, MeshDefect, SphereUv};
+use barytex_uv::mesh::{self, MAX_VERTICES, MeshDefect, SphereUv, TriMesh};
 use glam::{Vec2, Vec3};
 use proptest::prelude::*;
 
 /// Every generator at a resolution, with whether its surface is closed.
-fn all_meshes(a: u32, b: u32) -> Vec<(String, Mesh, bool)> {
-    let build = |name: &str, mesh: Result<Mesh, UvError>, closed: bool| {
+fn all_meshes(a: u32, b: u32) -> Vec<(String, TriMesh, bool)> {
+    let build = |name: &str, mesh: Result<TriMesh, UvError>, closed: bool| {
         (
             format!("{name}({a}, {b})"),
             mesh.expect("a valid resolution"),
@@ -247,7 +247,7 @@ fn bad_torus_radii_are_refused() {
 
 #[test]
 fn huge_resolutions_are_refused_before_allocating() {
-    let too_large = |r: Result<Mesh, UvError>| matches!(r, Err(UvError::TooLarge { limit, .. }) if limit == MAX_VERTICES);
+    let too_large = |r: Result<TriMesh, UvError>| matches!(r, Err(UvError::TooLarge { limit, .. }) if limit == MAX_VERTICES);
     assert!(too_large(mesh::plane(u32::MAX, u32::MAX)));
     assert!(too_large(mesh::plane(1 << 12, 1 << 12)));
     assert!(too_large(mesh::cube(u32::MAX)));

@@ -13,7 +13,7 @@
 //! - `barytex uv-layout --mesh sphere|equal-area-sphere|torus|cylinder|cube|plane [--size N]
 //!   [-o FILE.png]`: a parametric mesh's uv layout (default `docs/uv-layout/<mesh>.png`).
 
-mod demo;
+mod examples;
 mod render_cmd;
 mod report;
 mod timing;
@@ -249,7 +249,7 @@ fn main() -> ExitCode {
         Some(Command::Render(args)) => {
             render_cmd::run(&args.render.options(Some(args.file), args.scene, args.out))
         }
-        Some(Command::Examples) => demo::run(),
+        Some(Command::Examples) => examples::run(),
         Some(Command::Report(args)) => report::run(&report::Options {
             out: args.out,
             quick: args.quick,

@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use barytex_uv::UvError;
 use barytex_uv::distortion::MeshDistortion;
 use barytex_uv::layout::{LayoutOptions, draw_uv_layout, write_png};
-use barytex_uv::mesh::{self, Mesh};
+use barytex_uv::mesh::{self, TriMesh};
 use clap::ValueEnum;
 
 /// The meshes `uv-layout` can draw, at the resolutions of the pictures in `docs/uv-layout`.
@@ -30,7 +30,7 @@ pub(crate) enum MeshKind {
 }
 
 impl MeshKind {
-    fn build(self) -> Result<Mesh, UvError> {
+    fn build(self) -> Result<TriMesh, UvError> {
         match self {
             Self::Sphere => mesh::sphere(32, 16),
             Self::EqualAreaSphere => mesh::sphere_with(32, 16, mesh::SphereUv::EqualArea),

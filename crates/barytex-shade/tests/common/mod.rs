@@ -2,15 +2,15 @@
 #![allow(dead_code, unreachable_pub)]
 
 use barytex_raster::{Framebuffer, PipelineState, Shader, draw};
-use barytex_shade::{Camera, Light, Material, Scene, ViewVector};
+use barytex_shade::{Camera, Light, PhongMaterial, ShadeContext, ViewVector};
 use barytex_texture::Limits;
 use glam::{Vec3, Vec4};
 
 pub const SIZE: u32 = 128;
 
 /// A unit sphere seen from z = 3, one directional light from the upper left front.
-pub fn scene() -> Scene {
-    Scene {
+pub fn scene() -> ShadeContext {
+    ShadeContext {
         camera: Camera::look_at(
             Vec3::new(0.0, 0.0, 3.0),
             Vec3::ZERO,
@@ -26,12 +26,12 @@ pub fn scene() -> Scene {
             color: Vec3::ONE,
         }],
         ambient: Vec3::splat(0.1),
-        material: Material {
+        material: PhongMaterial {
             diffuse: Vec3::new(0.6, 0.4, 0.3),
             ambient: Vec3::new(0.6, 0.4, 0.3),
             specular: Vec3::splat(0.5),
             shininess: 40.0,
-            ..Material::default()
+            ..PhongMaterial::default()
         },
         view: ViewVector::Local,
     }

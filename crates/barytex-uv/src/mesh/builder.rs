@@ -3,7 +3,7 @@
 
 use glam::{DVec2, DVec3, Vec4};
 
-use super::{MAX_VERTICES, Mesh};
+use super::{MAX_VERTICES, TriMesh};
 use crate::UvError;
 
 /// One vertex as a generator computes it, in f64 (rounded once, to f32, when stored).
@@ -60,13 +60,13 @@ fn positive_zero(p: DVec3) -> DVec3 {
 
 /// A mesh under construction.
 pub(super) struct Builder {
-    mesh: Mesh,
+    mesh: TriMesh,
 }
 
 impl Builder {
     pub(super) fn with_capacity(vertices: usize) -> Self {
         Self {
-            mesh: Mesh {
+            mesh: TriMesh {
                 positions: Vec::with_capacity(vertices),
                 normals: Vec::with_capacity(vertices),
                 tangents: Vec::with_capacity(vertices),
@@ -138,7 +138,7 @@ impl Builder {
         }
     }
 
-    pub(super) fn finish(self) -> Mesh {
+    pub(super) fn finish(self) -> TriMesh {
         self.mesh
     }
 }

@@ -2,7 +2,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::Mesh;
+use super::TriMesh;
 use super::builder::{Builder, Vertex, at_least, fraction, within_limit};
 use crate::UvError;
 
@@ -32,7 +32,7 @@ const FACES: [(DVec3, DVec3); 6] = [
 /// assert_eq!(cube.positions.len(), 6 * 9);
 /// assert_eq!(cube.indices.len(), 6 * 8);
 /// ```
-pub fn cube(n: u32) -> Result<Mesh, UvError> {
+pub fn cube(n: u32) -> Result<TriMesh, UvError> {
     at_least("cube n", n, 1)?;
     let side = u128::from(n) + 1;
     let vertices = within_limit(6 * side * side)?;

@@ -2,7 +2,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::Mesh;
+use super::TriMesh;
 use super::builder::{Builder, Vertex, at_least, fraction, turn, within_limit};
 use crate::UvError;
 
@@ -24,7 +24,7 @@ use crate::UvError;
 /// let closed = barytex_uv::mesh::cylinder(12, 3, true).expect("valid");
 /// assert_eq!(closed.indices.len(), open.indices.len() + 2 * 12);
 /// ```
-pub fn cylinder(segments: u32, rings: u32, caps: bool) -> Result<Mesh, UvError> {
+pub fn cylinder(segments: u32, rings: u32, caps: bool) -> Result<TriMesh, UvError> {
     at_least("cylinder segments", segments, 3)?;
     at_least("cylinder rings", rings, 1)?;
     let side = (u128::from(segments) + 1) * (u128::from(rings) + 1);

@@ -50,16 +50,16 @@ pub use torus::torus;
 /// indices per vertex).
 pub const MAX_VERTICES: u64 = 1 << 22;
 
-/// Largest `| |n| − 1 |` that [`Mesh::validate`] accepts for a normal or tangent.
+/// Largest `| |n| − 1 |` that [`TriMesh::validate`] accepts for a normal or tangent.
 pub const UNIT_TOLERANCE: f32 = 1e-4;
 
-/// Largest `|n · t|` that [`Mesh::validate`] accepts between a normal and its tangent.
+/// Largest `|n · t|` that [`TriMesh::validate`] accepts between a normal and its tangent.
 pub const ORTHOGONAL_TOLERANCE: f32 = 1e-4;
 
 /// An indexed triangle mesh with per-vertex attributes (all attribute arrays have one entry per
 /// vertex).
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct Mesh {
+pub struct TriMesh {
     /// Object-space positions.
     pub positions: Vec<Vec3>,
     /// Unit normals, pointing outward.
@@ -72,7 +72,7 @@ pub struct Mesh {
     pub indices: Vec<[u32; 3]>,
 }
 
-/// The first defect [`Mesh::validate`] found.
+/// The first defect [`TriMesh::validate`] found.
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum MeshDefect {
@@ -139,7 +139,7 @@ impl fmt::Display for MeshDefect {
 
 impl core::error::Error for MeshDefect {}
 
-impl Mesh {
+impl TriMesh {
     /// Checks the mesh's invariants: equal attribute counts, indices in range, finite
     /// attributes, unit normals and tangents, `w = ±1`, tangents orthogonal to normals.
     ///

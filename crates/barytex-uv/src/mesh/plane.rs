@@ -2,7 +2,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::Mesh;
+use super::TriMesh;
 use super::builder::{Builder, Vertex, at_least, fraction, within_limit};
 use crate::UvError;
 
@@ -18,7 +18,7 @@ use crate::UvError;
 /// assert_eq!(plane.positions.len(), 5 * 3);
 /// assert_eq!(plane.indices.len(), 4 * 2 * 2);
 /// ```
-pub fn plane(nu: u32, nv: u32) -> Result<Mesh, UvError> {
+pub fn plane(nu: u32, nv: u32) -> Result<TriMesh, UvError> {
     at_least("plane nu", nu, 1)?;
     at_least("plane nv", nv, 1)?;
     let vertices = within_limit((u128::from(nu) + 1) * (u128::from(nv) + 1))?;

@@ -4,7 +4,7 @@ use core::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use glam::{DVec2, DVec3};
 
-use super::Mesh;
+use super::TriMesh;
 use super::builder::{Builder, Vertex, at_least, fraction, turn, within_limit};
 use crate::UvError;
 
@@ -29,7 +29,7 @@ pub enum SphereUv {
 /// let sphere = barytex_uv::mesh::sphere(16, 8).expect("valid");
 /// assert!(sphere.validate().is_ok());
 /// ```
-pub fn sphere(segments: u32, rings: u32) -> Result<Mesh, UvError> {
+pub fn sphere(segments: u32, rings: u32) -> Result<TriMesh, UvError> {
     sphere_with(segments, rings, SphereUv::Equirectangular)
 }
 
@@ -52,7 +52,7 @@ pub fn sphere(segments: u32, rings: u32) -> Result<Mesh, UvError> {
 /// // The equator sits at v = 1/2 in both mappings.
 /// assert!(sphere.uvs.iter().any(|uv| uv.y == 0.5));
 /// ```
-pub fn sphere_with(segments: u32, rings: u32, uv: SphereUv) -> Result<Mesh, UvError> {
+pub fn sphere_with(segments: u32, rings: u32, uv: SphereUv) -> Result<TriMesh, UvError> {
     at_least("sphere segments", segments, 3)?;
     at_least("sphere rings", rings, 2)?;
     let vertices = within_limit((u128::from(segments) + 1) * (u128::from(rings) + 1))?;

@@ -2,7 +2,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::Mesh;
+use super::TriMesh;
 use super::builder::{Builder, Vertex, at_least, fraction, turn, within_limit};
 use crate::UvError;
 
@@ -22,7 +22,7 @@ use crate::UvError;
 /// assert_eq!(torus.positions.len(), 25 * 13);
 /// assert!(barytex_uv::mesh::torus(24, 12, 0.25, 1.0).is_err());
 /// ```
-pub fn torus(segments: u32, rings: u32, major: f32, minor: f32) -> Result<Mesh, UvError> {
+pub fn torus(segments: u32, rings: u32, major: f32, minor: f32) -> Result<TriMesh, UvError> {
     for (what, value) in [("torus major radius", major), ("torus minor radius", minor)] {
         if !value.is_finite() {
             return Err(UvError::NonFinite { what });

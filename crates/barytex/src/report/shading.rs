@@ -9,13 +9,13 @@ use barytex_raster::{
 };
 use barytex_shade::{
     Camera, ColouredShader, FastPhongShader, GouraudShader, HighlightTest, HybridShader, Light,
-    Material, PhongShader, Scene, SlerpPhongShader, ViewVector, fast_phong_vertices, flat_vertices,
-    hybrid_vertices, mesh_vertices, slerp_vertices,
+    PhongMaterial, PhongShader, ShadeContext, SlerpPhongShader, ViewVector, fast_phong_vertices,
+    flat_vertices, hybrid_vertices, mesh_vertices, slerp_vertices,
 };
 use barytex_testkit::seeded::XorShift;
 use barytex_testkit::sphere;
 use barytex_texture::Limits;
-use barytex_uv::Mesh;
+use barytex_uv::TriMesh;
 use glam::{Vec2, Vec3, Vec4};
 
 use super::table::per_case_matrix;
@@ -24,8 +24,8 @@ use crate::timing::{median_frame_seconds, ns_per_call};
 
 /// The sphere scene: a unit sphere seen from z = 3, one white directional light from the upper
 /// left front, a reddish plastic with a sharp highlight.
-fn scene() -> Scene {
-    Scene {
+fn scene() -> ShadeContext {
+    ShadeContext {
         camera: Camera::look_at(
             Vec3::new(0.0, 0.0, 3.0),
             Vec3::ZERO,
@@ -41,12 +41,12 @@ fn scene() -> Scene {
             color: Vec3::ONE,
         }],
         ambient: Vec3::splat(0.1),
-        material: Material {
+        material: PhongMaterial {
             diffuse: Vec3::new(0.6, 0.4, 0.3),
             ambient: Vec3::new(0.6, 0.4, 0.3),
             specular: Vec3::splat(0.5),
             shininess: 40.0,
-            ..Material::default()
+            ..PhongMaterial::default()
         },
         view: ViewVector::Local,
     }
@@ -84,7 +84,7 @@ fn errors(image: &Framebuffer, reference: &Framebuffer) -> Vec<f64> {
 }
 
 /// The frequencies table on one sphere tessellation.
-fn frequencies_table(mesh: &Mesh, label: &str, size: u32, runs: usize) -> (Table, String) {
+fn frequencies_table(mesh: &TriMesh, label: &str, size: u32, runs: usize) -> (Table, String) {
     let scene = scene();
     let (vertices, indices) = mesh_vertices(mesh);
     let (scene_ref, vertices_ref, indices_ref) = (&scene, &vertices, &indices);

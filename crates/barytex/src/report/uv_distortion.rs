@@ -7,12 +7,12 @@ use std::time::Instant;
 
 use barytex_uv::UvError;
 use barytex_uv::distortion::MeshDistortion;
-use barytex_uv::mesh::{self, Mesh, SphereUv};
+use barytex_uv::mesh::{self, SphereUv, TriMesh};
 
 use super::{Section, Settings};
 
 /// The surfaces and mappings measured, at `a × b` (a around, b along).
-fn surfaces(a: u32, b: u32) -> Vec<(&'static str, Result<Mesh, UvError>)> {
+fn surfaces(a: u32, b: u32) -> Vec<(&'static str, Result<TriMesh, UvError>)> {
     vec![
         ("plane, planar", mesh::plane(a, a)),
         ("cube, 3 × 2 atlas", mesh::cube(b)),

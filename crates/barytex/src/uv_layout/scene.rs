@@ -8,7 +8,7 @@ use barytex_gltf::{LoadOptions, Material, Primitive, Scene, TextureRef, load_pat
 use barytex_texture::load::{AnyTexture2d, ColorSpace};
 use barytex_uv::distortion::MeshDistortion;
 use barytex_uv::layout::{LayoutOptions, draw_uv_layout, write_png};
-use barytex_uv::mesh::Mesh;
+use barytex_uv::mesh::TriMesh;
 use glam::Vec2;
 use tiny_skia::{ColorU8, Pixmap};
 
@@ -17,7 +17,7 @@ struct Layout<'a> {
     /// File name (without the folder).
     name: String,
     /// The primitive's positions, the uvs (after the texture transform) and triangles.
-    mesh: Mesh,
+    mesh: TriMesh,
     /// The texture drawn under the wireframe and how it is described; `None`: a checker.
     texture: Option<(&'a AnyTexture2d, ColorSpace, String)>,
 }
@@ -93,11 +93,11 @@ fn layouts(scene: &Scene) -> Vec<Layout<'_>> {
             });
             result.push(Layout {
                 name: format!("mesh{}{mesh_name}-primitive{p}.png", mesh.index),
-                mesh: Mesh {
+                mesh: TriMesh {
                     positions: primitive.positions.clone(),
                     uvs,
                     indices: primitive.triangles.clone(),
-                    ..Mesh::default()
+                    ..TriMesh::default()
                 },
                 texture,
             });

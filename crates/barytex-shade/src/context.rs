@@ -1,11 +1,11 @@
 //! What every shader of this crate needs: the camera, the lights, the ambient light, one
 //! material, and how the view vector is found; plus the vertex type built from a
-//! [`barytex_uv::Mesh`].
+//! [`barytex_uv::TriMesh`].
 
-use barytex_uv::Mesh;
+use barytex_uv::TriMesh;
 use glam::{Vec2, Vec3, Vec4};
 
-use crate::{Camera, Light, Lighting, Material};
+use crate::{Camera, Light, Lighting, PhongMaterial};
 
 /// How the vector `V` from the surface to the eye is found.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -22,7 +22,7 @@ pub enum ViewVector {
 /// Camera, lights and material: the uniforms of this crate's shaders. Positions and normals are
 /// in world space (transform meshes before drawing).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Scene {
+pub struct ShadeContext {
     /// The camera.
     pub camera: Camera,
     /// The light sources.
@@ -30,12 +30,12 @@ pub struct Scene {
     /// The ambient intensity `I_a`.
     pub ambient: Vec3,
     /// The surface's material.
-    pub material: Material,
+    pub material: PhongMaterial,
     /// How `V` is found.
     pub view: ViewVector,
 }
 
-impl Scene {
+impl ShadeContext {
     /// The unit view vector at `p` (zero when `p` is at the eye or not finite).
     #[must_use]
     #[inline]
@@ -56,7 +56,7 @@ impl Scene {
     /// `material` lit at `p` with the unit normal `n` (for textured materials).
     #[must_use]
     #[inline]
-    pub fn light_with(&self, material: &Material, p: Vec3, n: Vec3) -> Lighting {
+    pub fn light_with(&self, material: &PhongMaterial, p: Vec3, n: Vec3) -> Lighting {
         material.shade(p, n, self.view_vector(p), &self.lights, self.ambient)
     }
 
@@ -91,7 +91,7 @@ pub struct ShadeVertex {
 /// assert_eq!(indices.len(), 3 * sphere.indices.len());
 /// ```
 #[must_use]
-pub fn mesh_vertices(mesh: &Mesh) -> (Vec<ShadeVertex>, Vec<u32>) {
+pub fn mesh_vertices(mesh: &TriMesh) -> (Vec<ShadeVertex>, Vec<u32>) {
     let vertices = (0..mesh.positions.len())
         .map(|i| ShadeVertex {
             position: mesh.positions[i],
@@ -104,7 +104,7 @@ pub fn mesh_vertices(mesh: &Mesh) -> (Vec<ShadeVertex>, Vec<u32>) {
 }
 
 /// The triangles of `mesh` whose three indices are in range, as position triples.
-pub(crate) fn valid_triangles(mesh: &Mesh) -> impl Iterator<Item = [u32; 3]> + '_ {
+pub(crate) fn valid_triangles(mesh: &TriMesh) -> impl Iterator<Item = [u32; 3]> + '_ {
     let n = mesh.positions.len();
     mesh.indices
         .iter()

@@ -1,4 +1,4 @@
-//! What `barytex` with no arguments prints until the renderer exists: the seed's worked examples
+//! `barytex examples`: the worked examples of barycentric interpolation
 //! run through `barytex-interp`, each checked against exact rational arithmetic, and a summary
 //! of Kettner's orientation grid. Every number is computed at run time.
 
