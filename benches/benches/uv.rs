@@ -16,7 +16,7 @@ use barytex_testkit::uv::{finite_difference_jacobian, surface_points};
 use barytex_uv::mappings::{
     BoxMapping, CylinderCaps, Cylindrical, Planar, SphereProjection, Spherical, Torus,
 };
-use barytex_uv::{UvJacobian, UvMapping};
+use barytex_uv::{PositionMapping, UvJacobian};
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use glam::Vec3;
 
@@ -32,7 +32,7 @@ fn config() -> Criterion {
         .measurement_time(Duration::from_secs(1))
 }
 
-fn fd_jacobian(m: &dyn UvMapping, p: Vec3, n: Vec3) -> Option<UvJacobian> {
+fn fd_jacobian(m: &dyn PositionMapping, p: Vec3, n: Vec3) -> Option<UvJacobian> {
     finite_difference_jacobian(m, p, n, H)
 }
 
@@ -40,7 +40,7 @@ fn points(rng: &mut XorShift, torus: bool) -> Vec<(Vec3, Vec3)> {
     surface_points(rng, BATCH, torus)
 }
 
-fn mappings() -> Vec<(&'static str, Box<dyn UvMapping>)> {
+fn mappings() -> Vec<(&'static str, Box<dyn PositionMapping>)> {
     vec![
         ("planar", Box::new(Planar::xz(2.0).expect("valid"))),
         (

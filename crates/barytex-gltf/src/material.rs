@@ -1,8 +1,10 @@
 //! Metallic-roughness materials (glTF 2.0 §3.9) with `KHR_materials_unlit` and
 //! `KHR_texture_transform`. Texture references keep the texture index, the UV set and the UV
-//! transform as one 3×3 matrix, so a renderer applies `uv' = (M · (u, v, 1)).xy` and nothing else.
+//! transform as one [`TexCoordMapping`] (a 3×3 matrix), so a renderer applies
+//! `uv' = (M · (u, v, 1)).xy` through barytex-uv's mapping seam and nothing else.
 
-use glam::{Mat3, Vec2, Vec3, Vec4};
+use barytex_uv::mappings::TexCoordMapping;
+use glam::{Vec2, Vec3, Vec4};
 
 use crate::SceneError;
 use crate::json::{Obj, as_obj};
@@ -33,38 +35,10 @@ pub struct TextureRef {
     pub image: Option<usize>,
     /// The texture's sampler (defaults when it has none).
     pub sampler: SamplerParams,
-    /// Which `TEXCOORD_n` set to read (after any `KHR_texture_transform` override).
-    pub tex_coord: u32,
-    /// The `KHR_texture_transform` matrix, identity when absent.
-    pub transform: Mat3,
-}
-
-/// The `KHR_texture_transform` matrix: `translation · rotation · scale`, with
-/// `u′ = cos·u + sin·v`, `v′ = −sin·u + cos·v` for the rotation.
-///
-/// That is the direction the extension's prose and example fix: its example (offset `[0, 1]`,
-/// rotation π/2, scale ½) must land on the image's lower-left quadrant, and the sample model
-/// TextureTransformTest shows a red marker when the rotation turns the other way. The GLSL
-/// snippet in the extension's README, read as column-major, turns the other way (a known slip
-/// in that snippet; three.js, Babylon.js and the sample viewer agree with the example).
-///
-/// ```
-/// use barytex_gltf::material::texture_transform_matrix;
-/// use glam::{Vec2, Vec3};
-///
-/// // The extension's example: the lower-left quadrant, rotated.
-/// let m = texture_transform_matrix(Vec2::new(0.0, 1.0), std::f32::consts::FRAC_PI_2, Vec2::splat(0.5));
-/// let corner = |u: f32, v: f32| (m * Vec3::new(u, v, 1.0)).truncate();
-/// assert!(corner(1.0, 0.0).distance(Vec2::new(0.0, 0.5)) < 1e-6);
-/// assert!(corner(1.0, 1.0).distance(Vec2::new(0.5, 0.5)) < 1e-6);
-/// ```
-#[must_use]
-pub fn texture_transform_matrix(offset: Vec2, rotation: f32, scale: Vec2) -> Mat3 {
-    let (s, c) = rotation.sin_cos();
-    let translation = Mat3::from_cols(Vec3::X, Vec3::Y, Vec3::new(offset.x, offset.y, 1.0));
-    let rotation = Mat3::from_cols(Vec3::new(c, -s, 0.0), Vec3::new(s, c, 0.0), Vec3::Z);
-    let scale = Mat3::from_diagonal(Vec3::new(scale.x, scale.y, 1.0));
-    translation * rotation * scale
+    /// How the texture is mapped: which `TEXCOORD_n` set to read (after any
+    /// `KHR_texture_transform` override) through the `KHR_texture_transform` matrix (identity
+    /// when absent) — a [`UvMapping`](barytex_uv::UvMapping) a renderer evaluates per pixel.
+    pub mapping: TexCoordMapping,
 }
 
 /// A material, with the specification's defaults filled in.
@@ -330,52 +304,29 @@ fn texture_ref(
         .ok_or_else(|| info.error("index", "unresolved texture"))?;
     let mut tex_coord = u32::try_from(info.opt_u64("texCoord")?.unwrap_or(0))
         .map_err(|_| info.error("texCoord", "texCoord out of range"))?;
-    let mut transform = Mat3::IDENTITY;
+    let mut transform = None;
     if let Some(tt) = info.extension("KHR_texture_transform")? {
         let tptr = crate::json::child(&info.at("extensions"), "KHR_texture_transform");
         let tt = as_obj(tt, &tptr)?;
         let offset = tt.opt_f32s::<2>("offset")?.map_or(Vec2::ZERO, Vec2::from);
         let rotation = tt.opt_f32("rotation")?.unwrap_or(0.0);
         let scale = tt.opt_f32s::<2>("scale")?.map_or(Vec2::ONE, Vec2::from);
-        transform = texture_transform_matrix(offset, rotation, scale);
+        transform = Some((offset, rotation, scale));
         if let Some(tc) = tt.opt_u64("texCoord")? {
             tex_coord =
                 u32::try_from(tc).map_err(|_| tt.error("texCoord", "texCoord out of range"))?;
         }
     }
+    let mapping = match transform {
+        Some((offset, rotation, scale)) => {
+            TexCoordMapping::khr_texture_transform(tex_coord, offset, rotation, scale)
+        }
+        None => TexCoordMapping::new(tex_coord),
+    };
     Ok(Some(TextureRef {
         texture,
         image,
         sampler,
-        tex_coord,
-        transform,
+        mapping,
     }))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn texture_transform_follows_the_extension() {
-        let m = texture_transform_matrix(Vec2::new(0.5, 0.25), 0.0, Vec2::new(2.0, 3.0));
-        let uv = m * Vec3::new(1.0, 1.0, 1.0);
-        assert!((uv.x - 2.5).abs() < 1e-6 && (uv.y - 3.25).abs() < 1e-6);
-        let r = texture_transform_matrix(Vec2::ZERO, std::f32::consts::FRAC_PI_2, Vec2::ONE);
-        let uv = r * Vec3::new(1.0, 0.0, 1.0);
-        assert!(uv.x.abs() < 1e-6 && (uv.y + 1.0).abs() < 1e-6);
-        // The extension's example maps the unit square onto the lower-left quadrant.
-        let example = texture_transform_matrix(
-            Vec2::new(0.0, 1.0),
-            std::f32::consts::FRAC_PI_2,
-            Vec2::splat(0.5),
-        );
-        for (u, v) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0), (0.5, 0.5)] {
-            let t = example * Vec3::new(u, v, 1.0);
-            assert!(
-                (-1e-6..=0.5 + 1e-6).contains(&t.x) && (0.5 - 1e-6..=1.0 + 1e-6).contains(&t.y),
-                "({u}, {v}) → {t}"
-            );
-        }
-    }
 }

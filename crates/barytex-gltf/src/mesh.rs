@@ -374,12 +374,12 @@ fn parse_primitive(
     if let Some(m) = material.and_then(|m| ctx.materials.get(m)) {
         let have = sets.get("TEXCOORD").map_or(0, BTreeSet::len);
         for (t, _) in m.texture_refs() {
-            if usize::try_from(t.tex_coord).unwrap_or(usize::MAX) >= have {
+            if usize::try_from(t.mapping.set).unwrap_or(usize::MAX) >= have {
                 return Err(SceneError::invalid(
                     p.at("material"),
                     format!(
                         "the material samples TEXCOORD_{} but the primitive has {have} sets",
-                        t.tex_coord
+                        t.mapping.set
                     ),
                 ));
             }

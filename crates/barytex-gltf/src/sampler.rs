@@ -70,6 +70,20 @@ fn address(wrap: Wrap) -> AddressMode {
 }
 
 impl SamplerParams {
+    /// Whether the minification filter reads mip levels (`*_MIPMAP_*`).
+    ///
+    /// ```
+    /// use barytex_gltf::{MinFilter, SamplerParams};
+    ///
+    /// assert!(SamplerParams::default().uses_mipmaps());
+    /// let linear = SamplerParams { min_filter: MinFilter::Linear, ..SamplerParams::default() };
+    /// assert!(!linear.uses_mipmaps());
+    /// ```
+    #[must_use]
+    pub const fn uses_mipmaps(&self) -> bool {
+        !matches!(self.min_filter, MinFilter::Nearest | MinFilter::Linear)
+    }
+
     /// The equivalent `barytex_texture` sampler. Minification without mipmaps
     /// (`NEAREST`/`LINEAR`) samples only level 0, expressed as a LOD clamp of 0.
     #[must_use]

@@ -80,7 +80,7 @@ fn texture_transforms_become_matrices() {
             .iter()
             .find(|m| m.name.as_deref() == Some(n))
             .and_then(|m| m.base_color_texture)
-            .map(|t| t.transform)
+            .map(|t| t.mapping.transform)
             .unwrap_or_else(|| panic!("material {n}"))
     };
     let offset_u = by_name("Offset U");

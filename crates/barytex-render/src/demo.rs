@@ -11,7 +11,8 @@ use std::sync::Arc;
 
 use barytex_texture::load::AnyTexture2d;
 use barytex_texture::{Srgba8, Texture2d};
-use glam::{Mat3, Mat4, Quat, Vec3};
+use barytex_uv::mappings::TexCoordMapping;
+use glam::{Mat4, Quat, Vec3};
 
 use crate::{AntiAliasing, Filter, RenderOptions};
 use barytex_gltf::camera::{Projection, SceneCamera};
@@ -186,8 +187,7 @@ fn textured(name: &str, texture: usize, roughness: f32) -> Material {
             texture,
             image: Some(texture),
             sampler: repeat_trilinear(),
-            tex_coord: 0,
-            transform: Mat3::IDENTITY,
+            mapping: TexCoordMapping::new(0),
         }),
         roughness_factor: roughness,
         metallic_factor: 0.0,
@@ -274,8 +274,7 @@ pub fn demo_scene() -> Scene {
                 texture: 4,
                 image: Some(4),
                 sampler: repeat_trilinear(),
-                tex_coord: 0,
-                transform: Mat3::IDENTITY,
+                mapping: TexCoordMapping::new(0),
             }),
             ..textured("bumpy checker", 3, 0.35)
         },

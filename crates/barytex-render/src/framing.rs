@@ -121,6 +121,15 @@ pub fn scene_camera(scene: &Scene, index: usize, aspect: f32) -> Option<RenderCa
 }
 
 impl RenderCamera {
+    /// The unit direction the camera looks along (its −Z in world space).
+    #[must_use]
+    pub fn forward(&self) -> Vec3 {
+        self.view
+            .inverse()
+            .transform_vector3(Vec3::NEG_Z)
+            .normalize_or_zero()
+    }
+
     /// The matrices as text (column vectors written as rows of the printed matrix).
     #[must_use]
     pub fn describe(&self) -> String {

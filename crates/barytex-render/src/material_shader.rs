@@ -4,25 +4,16 @@
 
 use std::borrow::Cow;
 
+use barytex_gltf::material::AlphaMode;
 use barytex_raster::{Fragment, Shader};
-use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
+use barytex_shade::Light;
+use barytex_texture::Sampler as _;
+use barytex_uv::{SurfacePoint, UvMapping as _, UvSample};
+use glam::{Mat4, Vec2, Vec3, Vec4};
 
+use crate::lights::{light_terms, shininess};
 use crate::surface::{Reads, Surface};
 use crate::textures::{PreparedTexture, Slot};
-use barytex_gltf::light::LightKind;
-use barytex_gltf::material::AlphaMode;
-
-/// A light in world space, ready to evaluate.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct WorldLight {
-    pub(crate) kind: LightKind,
-    /// Colour × intensity.
-    pub(crate) radiance: Vec3,
-    pub(crate) position: Vec3,
-    /// Where the light points (unit).
-    pub(crate) direction: Vec3,
-    pub(crate) range: Option<f32>,
-}
 
 /// A primitive's vertex data in world space.
 pub(crate) struct WorldPrimitive<'a> {
@@ -58,7 +49,8 @@ pub(crate) struct ShaderMaterial {
     pub(crate) lit: bool,
 }
 
-/// Where lighting is evaluated (seed 001/004's shading frequencies).
+/// Where lighting is evaluated: the shading frequencies of Foley, van Dam, Feiner and Hughes,
+/// *Computer Graphics: Principles and Practice*, 2nd ed., §16.2 (constant, Gouraud, Phong).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Frequency {
     /// Once per polygon: the light each (unwelded) vertex carries, evaluated at the
@@ -82,34 +74,18 @@ pub(crate) struct MaterialShader<'a> {
     pub(crate) primitive: &'a WorldPrimitive<'a>,
     pub(crate) material: ShaderMaterial,
     pub(crate) textures: &'a [PreparedTexture],
-    pub(crate) lights: &'a [WorldLight],
+    pub(crate) lights: &'a [Light],
     pub(crate) ambient: Vec3,
-}
-
-/// glTF's recommended range falloff for punctual lights, times the inverse square law.
-fn distance_attenuation(distance: f32, range: Option<f32>) -> f32 {
-    let d2 = (distance * distance).max(1e-8);
-    let window = range.map_or(1.0, |r| {
-        let x = distance / r;
-        (1.0 - x * x * x * x).clamp(0.0, 1.0)
-    });
-    window / d2
-}
-
-/// KHR_lights_punctual's smooth spot cone.
-fn cone_attenuation(cos_angle: f32, inner: f32, outer: f32) -> f32 {
-    let (cos_outer, cos_inner) = (outer.cos(), inner.cos());
-    let scale = 1.0 / (cos_inner - cos_outer).max(1e-3);
-    let t = ((cos_angle - cos_outer) * scale).clamp(0.0, 1.0);
-    t * t
+    /// Interpolate every part of the varying, read or not (tests compare it with the
+    /// default, which interpolates only what [`reads`](MaterialShader::reads) names).
+    pub(crate) interpolate_all: bool,
 }
 
 impl MaterialShader<'_> {
     /// The parts of the varying [`fragment`](Shader::fragment) reads for this material,
     /// primitive and shading frequency; only those are interpolated.
     pub(crate) fn reads(&self) -> Reads {
-        #[cfg(test)]
-        if crate::surface::INTERPOLATE_ALL.load(std::sync::atomic::Ordering::Relaxed) {
+        if self.interpolate_all {
             return Reads::ALL;
         }
         let m = &self.material;
@@ -136,12 +112,7 @@ impl MaterialShader<'_> {
             m.metallic_roughness_texture,
             m.normal_texture,
         ];
-        let uses_set = |set: u32| {
-            slots
-                .iter()
-                .flatten()
-                .any(|s| (s.tex_coord == 1) == (set == 1))
-        };
+        let uses_set = |set: u32| slots.iter().flatten().any(|s| s.mapping.set == set);
         Reads::default()
             .with_if(Reads::POSITION, m.lit || self.fog.is_some())
             .with_if(Reads::NORMAL, per_pixel_normal)
@@ -156,11 +127,6 @@ impl MaterialShader<'_> {
         light_terms(self.lights, n, view, position, shininess)
     }
 
-    /// Blinn–Phong exponent from glTF's roughness.
-    fn shininess(roughness: f32) -> f32 {
-        shininess(roughness)
-    }
-
     fn fogged(&self, colour: Vec3, position: Vec3) -> Vec3 {
         match self.fog {
             Some((fog, forward)) => fog.apply(colour, self.eye, forward, position),
@@ -169,82 +135,25 @@ impl MaterialShader<'_> {
     }
 }
 
-/// The lights' diffuse (already divided by π) and specular (normalized Blinn–Phong lobe)
-/// contributions at `position` with unit normal `n`, before the material's colours.
-pub(crate) fn light_terms(
-    lights: &[WorldLight],
-    n: Vec3,
-    view: Vec3,
-    position: Vec3,
-    shininess: f32,
-) -> (Vec3, Vec3) {
-    {
-        let (mut diffuse, mut specular) = (Vec3::ZERO, Vec3::ZERO);
-        for light in lights {
-            let (l, attenuation) = match light.kind {
-                LightKind::Directional => (-light.direction, 1.0),
-                LightKind::Point | LightKind::Spot { .. } => {
-                    let to_light = light.position - position;
-                    let d = to_light.length();
-                    let l = to_light / d.max(1e-12);
-                    let mut a = distance_attenuation(d, light.range);
-                    if let LightKind::Spot {
-                        inner_cone_angle,
-                        outer_cone_angle,
-                    } = light.kind
-                    {
-                        a *= cone_attenuation(
-                            light.direction.dot(-l),
-                            inner_cone_angle,
-                            outer_cone_angle,
-                        );
-                    }
-                    (l, a)
-                }
-            };
-            let n_dot_l = n.dot(l);
-            if n_dot_l <= 0.0 || attenuation <= 0.0 {
-                continue;
-            }
-            let irradiance = light.radiance * (n_dot_l * attenuation);
-            let h = (l + view).normalize_or_zero();
-            let lobe = (shininess + 8.0) / (8.0 * std::f32::consts::PI)
-                * n.dot(h).max(0.0).powf(shininess);
-            diffuse += irradiance / std::f32::consts::PI;
-            specular += irradiance * lobe;
-        }
-        (diffuse, specular)
-    }
-}
-
-/// Blinn–Phong exponent from glTF's roughness (α = roughness², n = 2/α² − 2).
-pub(crate) fn shininess(roughness: f32) -> f32 {
-    let alpha_r = (roughness * roughness).clamp(0.02, 1.0);
-    (2.0 / (alpha_r * alpha_r) - 2.0).max(1.0)
-}
-
 impl MaterialShader<'_> {
-    fn sample(
-        &self,
-        slot: Option<Slot>,
-        s: &Surface,
-        ddx: &Surface,
-        ddy: &Surface,
-    ) -> Option<Vec4> {
+    /// The pixel as the uv mappings see it: both vertex texture coordinate sets with their
+    /// screen derivatives.
+    fn surface_point(s: &Surface, ddx: &Surface, ddy: &Surface) -> SurfacePoint {
+        let set = |uv: Vec2, dx: Vec2, dy: Vec2| UvSample {
+            uv,
+            duvdx: dx,
+            duvdy: dy,
+        };
+        SurfacePoint::with_derivatives(s.position, s.normal, ddx.position, ddy.position)
+            .with_tex_coords([set(s.uv0, ddx.uv0, ddy.uv0), set(s.uv1, ddx.uv1, ddy.uv1)])
+    }
+
+    /// The slot's texture through its uv mapping (the vertex set and `KHR_texture_transform`);
+    /// `None` when the material has no such texture or the mapping is undefined at the pixel.
+    fn sample(&self, slot: Option<Slot>, point: &SurfacePoint) -> Option<Vec4> {
         let slot = slot?;
         let texture = self.textures.get(slot.texture)?;
-        let (uv, dx, dy) = if slot.tex_coord == 1 {
-            (s.uv1, ddx.uv1, ddy.uv1)
-        } else {
-            (s.uv0, ddx.uv0, ddy.uv0)
-        };
-        let t: Mat3 = slot.transform;
-        let uv = (t * uv.extend(1.0)).truncate();
-        let (dx, dy) = (
-            (t * dx.extend(0.0)).truncate(),
-            (t * dy.extend(0.0)).truncate(),
-        );
-        Some(texture.sample(uv, dx, dy))
+        Some(texture.sample_uv(&slot.mapping.map(point)?))
     }
 }
 
@@ -299,7 +208,7 @@ impl Shader for MaterialShader<'_> {
             let view = (self.eye - position).normalize_or_zero();
             // Facing the eye, as the per-pixel path flips it for double-sided back faces.
             let n = if n.dot(view) < 0.0 { -n } else { n };
-            let shininess = Self::shininess(self.material.roughness);
+            let shininess = shininess(self.material.roughness);
             (surface.diffuse, surface.specular) = self.light_terms(n, view, position, shininess);
         }
         (self.view_projection * position.extend(1.0), surface)
@@ -320,8 +229,9 @@ impl Shader for MaterialShader<'_> {
         } else {
             (Surface::default(), Surface::default())
         };
+        let point = Self::surface_point(&s, &ddx, &ddy);
         let mut base = m.base_color * s.color;
-        if let Some(t) = self.sample(m.base_texture, &s, &ddx, &ddy) {
+        if let Some(t) = self.sample(m.base_texture, &point) {
             base *= t;
         }
         let alpha = match m.alpha_mode {
@@ -339,7 +249,7 @@ impl Shader for MaterialShader<'_> {
         }
         let view = (self.eye - s.position).normalize_or_zero();
         let (mut metallic, mut roughness) = (m.metallic, m.roughness);
-        if let Some(t) = self.sample(m.metallic_roughness_texture, &s, &ddx, &ddy) {
+        if let Some(t) = self.sample(m.metallic_roughness_texture, &point) {
             roughness *= t.y;
             metallic *= t.z;
         }
@@ -369,7 +279,7 @@ impl Shader for MaterialShader<'_> {
             if self.frequency == Frequency::Phong
                 && has_normals
                 && s.tangent.truncate().length_squared() > 0.0
-                && let Some(t) = self.sample(m.normal_texture, &s, &ddx, &ddy)
+                && let Some(t) = self.sample(m.normal_texture, &point)
             {
                 let mut tangent_space = barytex_shade::decode_normal(t.truncate());
                 tangent_space.x *= m.normal_scale;
@@ -381,10 +291,11 @@ impl Shader for MaterialShader<'_> {
                     .extend(s.tangent.w.signum());
                 n = barytex_shade::perturb_normal(n, tangent, tangent_space);
             }
-            self.light_terms(n, view, s.position, Self::shininess(roughness))
+            self.light_terms(n, view, s.position, shininess(roughness))
         };
         let mut color = albedo * diffuse + specular_color * specular;
-        // Environment mapping (seed 000): the reflected ray looks the panorama up, weighted by
+        // Environment mapping (Blinn and Newell, "Texture and reflection in computer generated
+        // images", CACM 19(10), 1976): the reflected ray looks the panorama up, weighted by
         // smoothness; its screen derivatives come from the position's and normal's, so the
         // filter sees the footprint (a curved mirror minifies the panorama strongly).
         if let Some(env) = self.environment {
@@ -410,11 +321,11 @@ impl Shader for MaterialShader<'_> {
             }
         }
         let mut ambient = self.ambient * base.truncate();
-        if let Some(o) = self.sample(m.occlusion_texture, &s, &ddx, &ddy) {
+        if let Some(o) = self.sample(m.occlusion_texture, &point) {
             ambient *= 1.0 + m.occlusion_strength * (o.x - 1.0);
         }
         let mut emissive = m.emissive;
-        if let Some(e) = self.sample(m.emissive_texture, &s, &ddx, &ddy) {
+        if let Some(e) = self.sample(m.emissive_texture, &point) {
             emissive *= e.truncate();
         }
         Some(

@@ -1,5 +1,6 @@
 //! What a render is asked to do: size, camera, shading, texture filter, anti-aliasing.
 
+use barytex_gltf::SamplerParams;
 use barytex_texture::sampler::{
     AnisotropicFilter, FilterMode, MipmapFilterMode, SamplerDescriptor,
 };
@@ -57,22 +58,45 @@ pub enum Filter {
     Ewa,
 }
 
+/// What a [`Filter`] makes of one texture's glTF sampler.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ResolvedFilter {
+    /// The descriptor to sample with (the file's wrap modes; filters as the [`Filter`] says).
+    pub descriptor: SamplerDescriptor,
+    /// Whether the filter reads mip levels: a chain is then built where the texture is
+    /// minified on screen (without one, level 0 is sampled alone).
+    pub mipmapped: bool,
+}
+
 impl Filter {
-    /// The descriptor `file` (from the glTF sampler) becomes under this filter.
+    /// The descriptor and mip use of a texture whose glTF sampler is `file`, under this filter.
+    ///
+    /// ```
+    /// use barytex_gltf::{MinFilter, SamplerParams};
+    /// use barytex_render::Filter;
+    ///
+    /// let no_mips = SamplerParams { min_filter: MinFilter::Linear, ..SamplerParams::default() };
+    /// assert!(!Filter::FromFile.resolve(&no_mips).mipmapped);
+    /// assert!(Filter::Trilinear.resolve(&no_mips).mipmapped);
+    /// assert_eq!(Filter::Anisotropic(8).resolve(&no_mips).descriptor.anisotropy_clamp, 8);
+    /// ```
     #[must_use]
-    pub fn apply(self, file: SamplerDescriptor) -> SamplerDescriptor {
-        let mut d = file;
-        let set = |d: &mut SamplerDescriptor, filter: FilterMode, mip: Option<MipmapFilterMode>| {
-            d.mag_filter = filter;
-            d.min_filter = filter;
-            match mip {
-                Some(m) => {
-                    d.mipmap_filter = m;
-                    d.lod_max_clamp = 32.0;
+    pub fn resolve(self, file: &SamplerParams) -> ResolvedFilter {
+        let mut d = file.to_descriptor();
+        let mut mipmapped = file.uses_mipmaps();
+        let mut set =
+            |d: &mut SamplerDescriptor, filter: FilterMode, mip: Option<MipmapFilterMode>| {
+                d.mag_filter = filter;
+                d.min_filter = filter;
+                mipmapped = mip.is_some();
+                match mip {
+                    Some(m) => {
+                        d.mipmap_filter = m;
+                        d.lod_max_clamp = 32.0;
+                    }
+                    None => d.lod_max_clamp = 0.0,
                 }
-                None => d.lod_max_clamp = 0.0,
-            }
-        };
+            };
         match self {
             Self::FromFile => {}
             Self::Nearest => set(&mut d, FilterMode::Nearest, None),
@@ -89,7 +113,10 @@ impl Filter {
                 d.anisotropic_filter = AnisotropicFilter::Ewa;
             }
         }
-        d
+        ResolvedFilter {
+            descriptor: d,
+            mipmapped,
+        }
     }
 }
 

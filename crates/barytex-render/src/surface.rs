@@ -22,7 +22,6 @@ impl Reads {
     pub(crate) const LIGHT: Self = Self(1 << 5);
     pub(crate) const TANGENT: Self = Self(1 << 6);
     /// Every part (tests compare a render that interpolates everything).
-    #[cfg(test)]
     pub(crate) const ALL: Self = Self(0x7f);
     /// Every part, with its name and its size in floats, in [`Surface`]'s order.
     pub(crate) const PARTS: [(Self, &'static str, usize); 7] = [
@@ -141,12 +140,6 @@ impl Interpolate for Surface {
         ))
     }
 }
-
-/// Tests set this to make every material read every part, to check that skipping the unread
-/// parts changes no pixel.
-#[cfg(test)]
-pub(crate) static INTERPOLATE_ALL: std::sync::atomic::AtomicBool =
-    std::sync::atomic::AtomicBool::new(false);
 
 #[cfg(test)]
 mod tests {

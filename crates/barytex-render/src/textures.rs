@@ -4,15 +4,18 @@
 
 use std::collections::HashMap;
 
+use barytex_gltf::SamplerParams;
+use barytex_gltf::material::TextureRef;
+use barytex_gltf::scene::Scene;
 use barytex_texture::load::{AnyTexture2d, ColorSpace};
 use barytex_texture::{
     MipChain, MipOptions, Sampler as _, SamplerDescriptor, Texel, Texture2d, TextureError,
     TextureSampler,
 };
-use glam::{Mat3, Vec2, Vec4};
+use barytex_uv::mappings::TexCoordMapping;
+use glam::{Vec2, Vec4};
 
-use barytex_gltf::material::TextureRef;
-use barytex_gltf::scene::Scene;
+use crate::{Filter, ResolvedFilter};
 
 /// A decoded texture with its filter, whatever its texel format.
 #[derive(Clone, Debug)]
@@ -92,22 +95,22 @@ fn prepare<T: Texel>(
     })
 }
 
-/// A material's texture slot ready to sample: the texture and its uv transform.
+/// A material's texture slot ready to sample: the texture and its uv mapping.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Slot {
     /// Index into [`Textures::list`].
     pub(crate) texture: usize,
-    /// Which `TEXCOORD_n`.
-    pub(crate) tex_coord: u32,
-    /// `KHR_texture_transform` (identity when absent).
-    pub(crate) transform: Mat3,
+    /// Which `TEXCOORD_n`, through `KHR_texture_transform`.
+    pub(crate) mapping: TexCoordMapping,
 }
 
 /// The prepared textures and what preparing them did.
 #[derive(Debug, Default)]
 pub(crate) struct Textures {
     pub(crate) list: Vec<PreparedTexture>,
-    index: HashMap<(usize, bool, String), usize>,
+    /// (image, sRGB?, the glTF sampler) → index into `list`; the render's [`Filter`] is the
+    /// same for every texture, so the glTF sampler decides the descriptor.
+    index: HashMap<(usize, bool, SamplerParams), usize>,
     /// Mip chains built.
     pub(crate) mip_chains: usize,
     /// Textures whose filter uses mipmaps but that are never minified: no chain built.
@@ -128,7 +131,7 @@ impl Textures {
         scene: &Scene,
         r: &TextureRef,
         space: ColorSpace,
-        descriptor: SamplerDescriptor,
+        filter: Filter,
         minification: MinificationProbe<'_>,
     ) -> Result<Option<Slot>, TextureError> {
         let Some(image) = r.image.and_then(|i| scene.images.get(i)) else {
@@ -138,12 +141,7 @@ impl Textures {
         let Some(decoded) = (if srgb { &image.srgb } else { &image.linear }) else {
             return Ok(None);
         };
-        // The descriptor has floats, so it is not `Hash`: its debug text is the key.
-        let key = (
-            r.image.unwrap_or(usize::MAX),
-            srgb,
-            format!("{descriptor:?}"),
-        );
+        let key = (r.image.unwrap_or(usize::MAX), srgb, r.sampler);
         let texture = if let Some(&i) = self.index.get(&key) {
             i
         } else {
@@ -156,7 +154,10 @@ impl Textures {
                 // A format this renderer does not know: drawn untextured.
                 _ => return Ok(None),
             };
-            let wants_mips = descriptor.lod_max_clamp > 0.0;
+            let ResolvedFilter {
+                descriptor,
+                mipmapped: wants_mips,
+            } = filter.resolve(&r.sampler);
             let mipmapped = wants_mips && minification(r, size) > 1.0;
             if mipmapped {
                 self.mip_chains += 1;
@@ -189,8 +190,7 @@ impl Textures {
         };
         Ok(Some(Slot {
             texture,
-            tex_coord: r.tex_coord,
-            transform: r.transform,
+            mapping: r.mapping,
         }))
     }
 }

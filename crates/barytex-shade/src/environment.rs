@@ -2,9 +2,9 @@
 //! (faces assumed infinitely far), an OpenGL sphere map or an equirectangular panorama.
 
 use barytex_texture::{CubeTexture, Sampler, Texel};
-use barytex_uv::UvJacobian;
-use barytex_uv::environment::{equirect_uv_and_jacobian, sphere_map_uv_and_jacobian};
-use glam::{Vec2, Vec3, Vec4};
+use barytex_uv::environment::{EnvironmentMap, EnvironmentMapping, Lookup};
+use barytex_uv::{SurfacePoint, UvMapping};
+use glam::{Vec3, Vec4};
 
 /// Anything that returns a colour for a direction and its screen derivatives (a cube map).
 pub trait DirectionSampler {
@@ -44,21 +44,26 @@ impl Environment<'_> {
     /// (projected through the map's Jacobian to pick a mip level).
     ///
     /// # Special values
-    /// A zero or non-finite direction, or a sphere map's singular direction `−z`, gives
-    /// transparent black.
+    /// A zero or non-finite direction, a sphere map's singular direction `−z`, or a non-finite
+    /// footprint gives transparent black.
     #[must_use]
     pub fn sample(&self, dir: Vec3, ddx: Vec3, ddy: Vec3) -> Vec4 {
-        let through = |j: Option<UvJacobian>, s: &dyn Sampler| match j {
-            Some(j) => {
-                let duv = |d: Vec3| Vec2::new(j.du.dot(d), j.dv.dot(d));
-                s.sample(j.uv, duv(ddx), duv(ddy))
-            }
-            None => Vec4::ZERO,
+        // The direction is the looked-up "position" and its derivatives the footprint: the
+        // map's UvMapping does the chain rule, the sampler picks the level.
+        let through = |map: EnvironmentMap, s: &dyn Sampler| {
+            let mapping = EnvironmentMapping {
+                map,
+                lookup: Lookup::Direction,
+            };
+            let point = SurfacePoint::with_derivatives(dir, Vec3::ZERO, ddx, ddy);
+            mapping
+                .map(&point)
+                .map_or(Vec4::ZERO, |mapped| s.sample_uv(&mapped))
         };
         match *self {
             Self::Cube(c) => c.sample_direction(dir, ddx, ddy),
-            Self::SphereMap(s) => through(sphere_map_uv_and_jacobian(dir), s),
-            Self::Equirect(s) => through(equirect_uv_and_jacobian(dir), s),
+            Self::SphereMap(s) => through(EnvironmentMap::SphereMap, s),
+            Self::Equirect(s) => through(EnvironmentMap::Equirect, s),
         }
     }
 }

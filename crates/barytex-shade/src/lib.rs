@@ -3,8 +3,8 @@
 //!
 //! | concept | items |
 //! |---|---|
-//! | lights | [`Light`] (directional, point, spot), [`SpotShape`] (Warn's `(cos α)^p`, glTF cones), [`Attenuation`] (`min(1/(c1 + c2 d + c3 d²), 1)`) |
-//! | illumination models | [`lambert`], [`phong_specular`], [`blinn_phong_specular`], [`PhongMaterial`], [`Lighting`], [`Specular`] |
+//! | lights | [`Light`] (directional, point, spot), [`SpotShape`] (Warn's `(cos α)^p`, glTF cones), [`Attenuation`] (`min(1/(c1 + c2 d + c3 d²), 1)`, or glTF's range-windowed `1/d²`) |
+//! | illumination models | [`lambert`], [`phong_specular`], [`blinn_phong_specular`], [`normalized_blinn_phong_specular`], [`PhongMaterial`], [`Lighting`], [`Specular`] |
 //! | camera and scene | [`Camera`] ([`camera::look_at`], [`camera::perspective`]), [`ShadeContext`], [`ViewVector`], [`ShadeVertex`], [`mesh_vertices`] |
 //! | normals | [`face_normal`], [`vertex_normals`] ([`NormalWeighting`]: uniform, area, angle) |
 //! | shading frequencies | flat ([`flat_vertices`] + [`ColouredShader`]), [`GouraudShader`], [`PhongShader`] (or [`SlerpPhongShader`]), Gouraud + Phong with the H-test ([`HighlightTest`], [`hybrid_vertices`], [`HybridShader`]), the exact-normal [`ReferenceShader`] |
@@ -63,7 +63,10 @@ pub use highlight::{
     HighlightTest, HighlightVerdict, HybridShader, HybridStats, HybridVertex, hybrid_vertices,
 };
 pub use light::{Light, LightSample, SpotShape};
-pub use model::{Lighting, PhongMaterial, Specular, blinn_phong_specular, lambert, phong_specular};
+pub use model::{
+    Lighting, PhongMaterial, Specular, blinn_phong_specular, lambert,
+    normalized_blinn_phong_specular, phong_specular,
+};
 pub use normals::{NormalWeighting, face_normal, vertex_normals};
 pub use octree::{
     CoverageQuadtree, FrontToBackStats, Octree, Voxel, child_order, render_back_to_front,

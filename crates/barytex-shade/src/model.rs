@@ -60,6 +60,37 @@ pub fn blinn_phong_specular(n: Vec3, l: Vec3, v: Vec3, shininess: f32) -> f32 {
     power(n.dot(h), shininess)
 }
 
+/// The energy-normalized Blinn lobe times the cosine of incidence,
+/// `(n + 8)/(8π) · max(N·H, 0)^n · (N·L)` for unit `n`, `l`, `v` ([`Specular::NormalizedBlinnPhong`]).
+///
+/// Zero when `N·L ≤ 0` or `L = −V`; never negative; NaN input gives 0. Unlike the classic lobes
+/// it is not bounded by 1: the normalization makes the lobe integrate to at most 1 over the
+/// hemisphere, so its peak grows with `n`.
+///
+/// ```
+/// use barytex_shade::normalized_blinn_phong_specular;
+/// use glam::Vec3;
+///
+/// // Light and eye along the normal: the peak, (n + 8)/(8π).
+/// let peak = normalized_blinn_phong_specular(Vec3::Z, Vec3::Z, Vec3::Z, 16.0);
+/// assert!((peak - 24.0 / (8.0 * std::f32::consts::PI)).abs() < 1e-6);
+/// assert_eq!(normalized_blinn_phong_specular(Vec3::Z, -Vec3::Z, Vec3::Z, 16.0), 0.0);
+/// ```
+#[must_use]
+#[inline]
+pub fn normalized_blinn_phong_specular(n: Vec3, l: Vec3, v: Vec3, shininess: f32) -> f32 {
+    let nl = n.dot(l);
+    if nl.is_nan() || nl <= 0.0 {
+        return 0.0;
+    }
+    let h = (l + v).normalize_or_zero();
+    let shininess = clamp_positive(shininess);
+    let lobe =
+        (shininess + 8.0) / (8.0 * core::f32::consts::PI) * n.dot(h).max(0.0).powf(shininess);
+    let out = nl * lobe;
+    if out.is_finite() { out } else { 0.0 }
+}
+
 /// `clamp(c, 0, 1)^n`, 0 for NaN `c`, exponent clamped at 0.
 #[inline]
 pub(crate) fn power(c: f32, shininess: f32) -> f32 {
@@ -78,6 +109,11 @@ pub enum Specular {
     Phong,
     /// Blinn's `(N·H)^n`.
     BlinnPhong,
+    /// Blinn's lobe normalized to conserve energy and weighted by the cosine of incidence:
+    /// `(n + 8)/(8π) · (N·H)^n · (N·L)` (Akenine-Möller, Haines, Hoffman, *Real-Time
+    /// Rendering*, 3rd ed., §7.6, eq. 7.49). With `k_d = 1/π` this is the physically based
+    /// Blinn–Phong that barytex-render lights glTF's metallic-roughness materials with.
+    NormalizedBlinnPhong,
     /// No specular term.
     None,
 }
@@ -90,6 +126,7 @@ impl Specular {
         match self {
             Self::Phong => phong_specular(n, l, v, shininess),
             Self::BlinnPhong => blinn_phong_specular(n, l, v, shininess),
+            Self::NormalizedBlinnPhong => normalized_blinn_phong_specular(n, l, v, shininess),
             Self::None => 0.0,
         }
     }

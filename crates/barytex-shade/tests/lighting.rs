@@ -31,11 +31,12 @@ fn any_f32() -> impl Strategy<Value = f32> {
 }
 
 fn light() -> impl Strategy<Value = Light> {
-    let att = (0.0f32..2.0, 0.0f32..2.0, 0.0f32..2.0).prop_map(|(c, l, q)| Attenuation {
-        constant: c,
-        linear: l,
-        quadratic: q,
-    });
+    let att =
+        (0.0f32..2.0, 0.0f32..2.0, 0.0f32..2.0).prop_map(|(c, l, q)| Attenuation::Polynomial {
+            constant: c,
+            linear: l,
+            quadratic: q,
+        });
     let pos = (-5.0f32..5.0, -5.0f32..5.0, -5.0f32..5.0).prop_map(|(x, y, z)| Vec3::new(x, y, z));
     prop_oneof![
         (unit(), colour()).prop_map(|(direction, color)| Light::Directional { direction, color }),
@@ -143,14 +144,14 @@ proptest! {
 
     #[test]
     fn attenuation_is_at_most_one(c in any_f32(), l in any_f32(), q in any_f32(), d in any_f32()) {
-        let f = Attenuation { constant: c, linear: l, quadratic: q }.factor(d);
+        let f = Attenuation::Polynomial { constant: c, linear: l, quadratic: q }.factor(d);
         prop_assert!((0.0..=1.0).contains(&f), "{f}");
     }
 
     #[test]
     fn attenuation_never_grows_with_distance(c in 0.0f32..3.0, l in 0.0f32..3.0, q in 0.0f32..3.0,
                                              d in 0.0f32..100.0, e in 0.0f32..100.0) {
-        let a = Attenuation { constant: c, linear: l, quadratic: q };
+        let a = Attenuation::Polynomial { constant: c, linear: l, quadratic: q };
         prop_assert!(a.factor(d.max(e)) <= a.factor(d.min(e)));
     }
 
@@ -279,7 +280,7 @@ fn gltf_cone_ramps_between_inner_and_outer() {
 
 #[test]
 fn attenuation_formula() {
-    let a = Attenuation {
+    let a = Attenuation::Polynomial {
         constant: 1.0,
         linear: 0.5,
         quadratic: 0.25,

@@ -3,7 +3,7 @@
 
 use glam::{Vec2, Vec3};
 
-use barytex_uv::{UvJacobian, UvMapping};
+use barytex_uv::{PositionMapping, UvJacobian};
 
 use crate::seeded::XorShift;
 
@@ -11,7 +11,7 @@ use crate::seeded::XorShift;
 /// u/v seam by removing whole turns; `None` where any evaluation is.
 #[must_use]
 pub fn finite_difference_jacobian(
-    m: &dyn UvMapping,
+    m: &dyn PositionMapping,
     p: Vec3,
     n: Vec3,
     h: f32,

@@ -36,4 +36,29 @@ pub trait Sampler {
     /// resolution).
     #[must_use]
     fn sample_level(&self, uv: Vec2, lod: f32) -> Vec4;
+
+    /// The colour over the footprint a [`UvMapping`](barytex_uv::UvMapping) returned: the
+    /// mapping → sampler step of the chain, with the derivatives computed once by the mapping.
+    ///
+    /// ```
+    /// use barytex_texture::procedural::Checkerboard;
+    /// use barytex_texture::Sampler;
+    /// use barytex_uv::mappings::TexCoordMapping;
+    /// use barytex_uv::{SurfacePoint, UvMapping, UvSample};
+    /// use glam::{Vec2, Vec3, Vec4};
+    ///
+    /// let board = Checkerboard { even: Vec4::ZERO, odd: Vec4::ONE, checks: 2.0 };
+    /// let vertex = UvSample { uv: Vec2::new(0.1, 0.1), ..UvSample::default() };
+    /// let point = SurfacePoint::at(Vec3::ZERO, Vec3::Z).with_tex_coords([vertex; 2]);
+    /// // Offset by half a board: the top-left square's neighbour.
+    /// let mapping = TexCoordMapping::khr_texture_transform(0, Vec2::new(0.5, 0.0), 0.0, Vec2::ONE);
+    /// let mapped = mapping.map(&point).expect("finite");
+    /// assert_eq!(board.sample_uv(&mapped), board.sample(Vec2::new(0.6, 0.1), Vec2::ZERO, Vec2::ZERO));
+    /// assert_ne!(board.sample_uv(&mapped), board.sample(vertex.uv, Vec2::ZERO, Vec2::ZERO));
+    /// ```
+    #[must_use]
+    #[inline]
+    fn sample_uv(&self, mapped: &barytex_uv::UvSample) -> Vec4 {
+        self.sample(mapped.uv, mapped.duvdx, mapped.duvdy)
+    }
 }

@@ -4,7 +4,8 @@
 //!
 //! | concept | items |
 //! |---|---|
-//! | the seam | [`UvMapping`], [`SurfacePoint`], [`UvJacobian`], [`UvSample`] |
+//! | the seam | [`UvMapping`], [`PositionMapping`], [`SurfacePoint`], [`UvJacobian`], [`UvSample`] |
+//! | mesh texture coordinates | [`TexCoordMapping`](mappings::TexCoordMapping) (a vertex uv set with glTF's `KHR_texture_transform`) |
 //! | object-space mappings | [`mappings`]: [`Planar`](mappings::Planar), [`BoxMapping`](mappings::BoxMapping), [`Cylindrical`](mappings::Cylindrical), [`Spherical`](mappings::Spherical), [`Torus`](mappings::Torus) |
 //! | seam repair | [`seam::repair_seam`], [`seam::repair_sphere_triangle`] |
 //! | environment maps | [`environment`] |
@@ -17,13 +18,13 @@
 //! degenerate input: mappings return `None`, constructors a [`UvError`].
 //!
 //! ```
-//! use barytex_uv::{SurfacePoint, UvJacobian, UvMapping};
+//! use barytex_uv::{PositionMapping, SurfacePoint, UvJacobian, UvMapping};
 //! use glam::{Vec2, Vec3};
 //!
 //! /// The xz plane, one texture repeat per 2 units.
 //! struct Floor;
 //!
-//! impl UvMapping for Floor {
+//! impl PositionMapping for Floor {
 //!     fn uv_and_jacobian(&self, p: Vec3, _normal: Vec3) -> Option<UvJacobian> {
 //!         p.is_finite().then(|| UvJacobian {
 //!             uv: Vec2::new(p.x, p.z) / 2.0,
@@ -53,5 +54,5 @@ pub mod seam;
 
 pub use distortion::{MeshDistortion, TriangleDistortion};
 pub use error::UvError;
-pub use mapping::{SurfacePoint, UvJacobian, UvMapping, UvSample};
+pub use mapping::{PositionMapping, SurfacePoint, UvJacobian, UvMapping, UvSample};
 pub use mesh::{MeshDefect, TriMesh};

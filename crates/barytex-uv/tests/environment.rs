@@ -5,7 +5,7 @@
 
 use barytex_testkit::seeded::XorShift;
 use barytex_testkit::strategies::bits_f32;
-use barytex_uv::UvMapping;
+use barytex_uv::PositionMapping;
 use barytex_uv::environment::{
     CUBE_ROUND_TRIP_BOUND, CubeFace, EQUIRECT_ROUND_TRIP_BOUND, EnvironmentMap, EnvironmentMapping,
     Lookup, OCTAHEDRAL_ROUND_TRIP_BOUND, SPHERE_MAP_ROUND_TRIP_BOUND, cube_direction, cube_face_uv,

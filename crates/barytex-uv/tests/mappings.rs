@@ -12,7 +12,7 @@ use barytex_uv::mappings::{
     BoxFace, BoxMapping, CylinderCaps, Cylindrical, InverseUvMapping, Planar, SphereProjection,
     Spherical, Torus, UvMapping64, triplanar_weights,
 };
-use barytex_uv::{SurfacePoint, UvError, UvMapping};
+use barytex_uv::{PositionMapping, SurfacePoint, UvError, UvMapping};
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use proptest::prelude::*;
 
@@ -21,7 +21,7 @@ const FD_BOUND: f64 = 1e-7;
 /// Bound on `|uv − uv(point_at(uv))|` (max norm) for the f32 round trip.
 const ROUND_TRIP_BOUND: f32 = 1e-6;
 
-trait Mapping: UvMapping + UvMapping64 {}
+trait Mapping: PositionMapping + UvMapping64 {}
 
 /// A mapping, its inverse, and the surface normal at a point.
 type Inverse = (
@@ -30,7 +30,7 @@ type Inverse = (
     Box<dyn InverseUvMapping>,
     fn(Vec3) -> Vec3,
 );
-impl<T: UvMapping + UvMapping64> Mapping for T {}
+impl<T: PositionMapping + UvMapping64> Mapping for T {}
 
 /// A named mapping and a sampler of regular points (away from axes, poles and singular sets)
 /// with their normals.
@@ -465,7 +465,7 @@ fn projections_match_the_seed_formulas() {
         (Vec3::NEG_X, 0.75),
     ] {
         for m in [
-            &equirect as &dyn UvMapping,
+            &equirect as &dyn PositionMapping,
             &equal_area,
             &cylinder(),
             &torus(),

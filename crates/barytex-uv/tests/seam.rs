@@ -3,7 +3,7 @@
 //! handling on the sphere.
 
 use barytex_testkit::strategies::bits_f32;
-use barytex_uv::UvMapping;
+use barytex_uv::PositionMapping;
 use barytex_uv::mappings::{InverseUvMapping, SphereProjection, Spherical};
 use barytex_uv::seam::{repair_seam, repair_sphere_triangle};
 use glam::{Vec2, Vec3};

@@ -10,7 +10,7 @@
 
 use std::fmt::Write as _;
 
-use barytex_uv::UvMapping;
+use barytex_uv::PositionMapping;
 use barytex_uv::environment::{
     CUBE_ROUND_TRIP_BOUND, CubeFace, EQUIRECT_ROUND_TRIP_BOUND, EnvironmentMap, EnvironmentMapping,
     Lookup, OCTAHEDRAL_ROUND_TRIP_BOUND, SPHERE_MAP_ROUND_TRIP_BOUND, cube_direction, cube_face_uv,

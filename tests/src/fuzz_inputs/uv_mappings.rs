@@ -17,7 +17,7 @@ use barytex_uv::mappings::{
     Torus, UvMapping64,
 };
 use barytex_uv::seam::{repair_seam, repair_sphere_triangle};
-use barytex_uv::{SurfacePoint, UvMapping};
+use barytex_uv::{PositionMapping, SurfacePoint, UvMapping};
 use glam::{Vec2, Vec3};
 
 use super::{mode, word};
@@ -72,7 +72,7 @@ pub fn uv_mappings_input(bytes: &[u8]) -> UvMappingsInput {
 }
 
 /// A mapping as the checks see it.
-trait Mapping: UvMapping + UvMapping64 {
+trait Mapping: PositionMapping + UvMapping64 {
     fn inverse(&self) -> Option<&dyn InverseUvMapping>;
     /// Which of u, v are periodic (wrapped into `[0, 1)`), given the normal.
     fn periodic(&self, normal: Vec3) -> (bool, bool);

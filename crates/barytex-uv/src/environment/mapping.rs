@@ -8,7 +8,7 @@ use super::{
     cube_face_uv_and_jacobian, equirect_uv_and_jacobian, octahedral_uv_and_jacobian,
     sphere_map_uv_and_jacobian,
 };
-use crate::{UvJacobian, UvMapping};
+use crate::{PositionMapping, UvJacobian};
 
 /// Which parameterization of the sphere of directions a texture stores.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -99,6 +99,11 @@ pub enum Lookup {
         /// The eye position.
         eye: Vec3,
     },
+    /// The point's position is itself the direction (any finite nonzero length), and its
+    /// screen derivatives are the direction's: a direction computed per pixel (a reflection
+    /// that follows a curved mirror's interpolated normal, a sky dome) looks the map up with
+    /// the footprint it sweeps. The normal is not read.
+    Direction,
 }
 
 /// An environment map as a [`UvMapping`]: the coordinate of the direction chosen by `lookup`
@@ -116,7 +121,7 @@ pub enum Lookup {
 ///
 /// ```
 /// use barytex_uv::environment::{EnvironmentMap, EnvironmentMapping, Lookup};
-/// use barytex_uv::{SurfacePoint, UvMapping};
+/// use barytex_uv::{PositionMapping, SurfacePoint, UvMapping};
 /// use glam::{Vec2, Vec3};
 ///
 /// // A mirror floor seen at 45° from +z reflects the sky 45° above the horizon towards −z.
@@ -133,11 +138,12 @@ pub struct EnvironmentMapping {
     pub lookup: Lookup,
 }
 
-impl UvMapping for EnvironmentMapping {
+impl PositionMapping for EnvironmentMapping {
     fn uv_and_jacobian(&self, position: Vec3, normal: Vec3) -> Option<UvJacobian> {
-        let n = unit(normal)?;
         match self.lookup {
+            Lookup::Direction => self.map.uv_and_direction_jacobian(position),
             Lookup::Normal => {
+                let n = unit(normal)?;
                 let j = self.map.uv_and_direction_jacobian(n)?;
                 Some(UvJacobian {
                     uv: j.uv,
@@ -146,6 +152,7 @@ impl UvMapping for EnvironmentMapping {
                 })
             }
             Lookup::Reflect { eye } => {
+                let n = unit(normal)?;
                 let to_eye = eye - position;
                 let v = unit(to_eye)?;
                 let len = to_eye.length();

@@ -4,7 +4,7 @@
 use glam::{DVec2, DVec3, Vec2, Vec3};
 
 use super::{DUvJacobian, UvMapping64};
-use crate::{UvError, UvJacobian, UvMapping};
+use crate::{PositionMapping, UvError, UvJacobian};
 
 /// A face of the box, named by its outward normal.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -111,7 +111,7 @@ impl BoxFace {
 ///
 /// ```
 /// use barytex_uv::mappings::{BoxFace, BoxMapping};
-/// use barytex_uv::UvMapping;
+/// use barytex_uv::PositionMapping;
 /// use glam::{Vec2, Vec3};
 ///
 /// let cube = BoxMapping::new(Vec3::ZERO, 2.0).expect("valid size");
@@ -185,7 +185,7 @@ impl UvMapping64 for BoxMapping {
     }
 }
 
-impl UvMapping for BoxMapping {
+impl PositionMapping for BoxMapping {
     /// `None` for a non-finite position, a zero or non-finite normal, or a `uv` beyond f32.
     fn uv_and_jacobian(&self, position: Vec3, normal: Vec3) -> Option<UvJacobian> {
         self.uv_and_jacobian_f64(position.as_dvec3(), normal.as_dvec3())?

@@ -5,7 +5,7 @@ use core::f64::consts::TAU;
 use glam::{DVec2, DVec3, Vec2, Vec3};
 
 use super::{DUvJacobian, InverseUvMapping, UvMapping64, unit_turns, wrap_unit_f32};
-use crate::{UvError, UvJacobian, UvMapping};
+use crate::{PositionMapping, UvError, UvJacobian};
 
 /// What the cylinder's caps get.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -37,7 +37,7 @@ pub enum CylinderCaps {
 ///
 /// ```
 /// use barytex_uv::mappings::{Cylindrical, InverseUvMapping};
-/// use barytex_uv::UvMapping;
+/// use barytex_uv::PositionMapping;
 /// use glam::{Vec2, Vec3};
 ///
 /// let c = Cylindrical::new(1.0, 2.0).expect("valid");
@@ -107,7 +107,7 @@ impl UvMapping64 for Cylindrical {
     }
 }
 
-impl UvMapping for Cylindrical {
+impl PositionMapping for Cylindrical {
     /// `None` for non-finite input, a point on the axis (side mapping), or a result beyond f32;
     /// the side's `u` is in `[0, 1)`.
     fn uv_and_jacobian(&self, position: Vec3, normal: Vec3) -> Option<UvJacobian> {

@@ -1,10 +1,12 @@
 //! Object-space mappings, one per file: [`Planar`] (any frame), [`BoxMapping`] (face by the
 //! dominant normal axis, with [`triplanar_weights`]), [`Cylindrical`] (optional planar caps),
-//! [`Spherical`] (equirectangular or equal-area, [`SphereProjection`]) and [`Torus`].
+//! [`Spherical`] (equirectangular or equal-area, [`SphereProjection`]) and [`Torus`] compute uv
+//! from the position; [`TexCoordMapping`] reads a mesh's vertex uv set through an affine
+//! transform (glTF's `KHR_texture_transform`).
 //!
 //! Every mapping evaluates its formulas in f64 from the f32 inputs
 //! ([`UvMapping64::uv_and_jacobian_f64`], the reference the tests differentiate numerically) and
-//! rounds once to f32 for [`UvMapping`](crate::UvMapping); a result that would not be finite in
+//! rounds once to f32 for [`PositionMapping`](crate::PositionMapping); a result that would not be finite in
 //! f32 (a gradient overflowing next to an axis) is `None`.
 //!
 //! # From the seed's (s, t) to (u, v)
@@ -23,12 +25,14 @@ mod box_mapping;
 mod cylindrical;
 mod planar;
 mod spherical;
+mod tex_coord;
 mod torus;
 
 pub use box_mapping::{BoxFace, BoxMapping, triplanar_weights};
 pub use cylindrical::{CylinderCaps, Cylindrical};
 pub use planar::Planar;
 pub use spherical::{SphereProjection, Spherical};
+pub use tex_coord::TexCoordMapping;
 pub use torus::Torus;
 
 use glam::{DVec2, DVec3, Vec2, Vec3};

@@ -3,7 +3,7 @@
 use glam::{DVec2, DVec3, Vec2, Vec3};
 
 use super::{DUvJacobian, InverseUvMapping, UvMapping64};
-use crate::{UvError, UvJacobian, UvMapping};
+use crate::{PositionMapping, UvError, UvJacobian};
 
 /// Planar projection: `u` and `v` are the coordinates of the point in the frame
 /// `(origin, u_axis, v_axis)`, projected along the plane's normal.
@@ -19,7 +19,7 @@ use crate::{UvError, UvJacobian, UvMapping};
 ///
 /// ```
 /// use barytex_uv::mappings::Planar;
-/// use barytex_uv::UvMapping;
+/// use barytex_uv::PositionMapping;
 /// use glam::{Vec2, Vec3};
 ///
 /// // One texture repeat per 2 units on the floor.
@@ -127,7 +127,7 @@ impl UvMapping64 for Planar {
     }
 }
 
-impl UvMapping for Planar {
+impl PositionMapping for Planar {
     /// `None` for a non-finite position or normal (the normal is otherwise unused) or a `uv`
     /// beyond f32.
     fn uv_and_jacobian(&self, position: Vec3, normal: Vec3) -> Option<UvJacobian> {

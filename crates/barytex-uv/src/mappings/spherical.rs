@@ -5,7 +5,7 @@ use core::f64::consts::{FRAC_PI_2, PI, TAU};
 use glam::{DVec2, DVec3, Vec2, Vec3};
 
 use super::{DUvJacobian, InverseUvMapping, UvMapping64, unit_turns, wrap_unit_f32};
-use crate::{UvError, UvJacobian, UvMapping};
+use crate::{PositionMapping, UvError, UvJacobian};
 
 /// How latitude `φ ∈ [−π/2, π/2]` becomes the seed's `t` (and `v = 1 − t`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -38,7 +38,7 @@ pub enum SphereProjection {
 ///
 /// ```
 /// use barytex_uv::mappings::{InverseUvMapping, SphereProjection, Spherical};
-/// use barytex_uv::UvMapping;
+/// use barytex_uv::PositionMapping;
 /// use glam::{Vec2, Vec3};
 ///
 /// let s = Spherical::new(1.0, SphereProjection::EqualArea).expect("valid");
@@ -99,7 +99,7 @@ impl UvMapping64 for Spherical {
     }
 }
 
-impl UvMapping for Spherical {
+impl PositionMapping for Spherical {
     /// `None` for non-finite input, a point on the pole axis, or a gradient beyond f32;
     /// `u ∈ [0, 1)`, `v ∈ [0, 1]`.
     fn uv_and_jacobian(&self, position: Vec3, normal: Vec3) -> Option<UvJacobian> {

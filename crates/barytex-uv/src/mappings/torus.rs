@@ -5,7 +5,7 @@ use core::f64::consts::TAU;
 use glam::{DVec2, DVec3, Vec2, Vec3};
 
 use super::{DUvJacobian, InverseUvMapping, UvMapping64, unit_turns, wrap_unit_f32};
-use crate::{UvError, UvJacobian, UvMapping};
+use crate::{PositionMapping, UvError, UvJacobian};
 
 /// The seed's torus about the y axis,
 /// `P(θ, φ) = ((R + r cos φ) sin θ, r sin φ, (R + r cos φ) cos θ)`, with `s = θ/2π` and
@@ -27,7 +27,7 @@ use crate::{UvError, UvJacobian, UvMapping};
 ///
 /// ```
 /// use barytex_uv::mappings::{InverseUvMapping, Torus};
-/// use barytex_uv::UvMapping;
+/// use barytex_uv::PositionMapping;
 /// use glam::{Vec2, Vec3};
 ///
 /// let torus = Torus::new(2.0, 0.5).expect("valid radii");
@@ -83,7 +83,7 @@ impl UvMapping64 for Torus {
     }
 }
 
-impl UvMapping for Torus {
+impl PositionMapping for Torus {
     /// `None` for non-finite input, a point on the axis or the core circle, or a gradient
     /// beyond f32; `u, v ∈ [0, 1)`.
     fn uv_and_jacobian(&self, position: Vec3, normal: Vec3) -> Option<UvJacobian> {

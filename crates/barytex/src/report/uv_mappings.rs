@@ -8,7 +8,7 @@ use barytex_testkit::uv::{finite_difference_jacobian, surface_points};
 use barytex_uv::mappings::{
     BoxMapping, CylinderCaps, Cylindrical, Planar, SphereProjection, Spherical, Torus, UvMapping64,
 };
-use barytex_uv::{UvJacobian, UvMapping};
+use barytex_uv::{PositionMapping, UvJacobian};
 use glam::Vec3;
 
 use super::{ErrorStats, Row, Section, Settings, Table};
@@ -17,8 +17,8 @@ use crate::timing::ns_per_call;
 /// Finite-difference step, in object units (the objects are of size ~1).
 const H: f32 = 1e-3;
 
-trait Mapping: UvMapping + UvMapping64 {}
-impl<T: UvMapping + UvMapping64> Mapping for T {}
+trait Mapping: PositionMapping + UvMapping64 {}
+impl<T: PositionMapping + UvMapping64> Mapping for T {}
 
 /// Relative Frobenius error of `j` against the f64 Jacobian at `(p, n)`.
 fn jacobian_error(m: &dyn Mapping, p: Vec3, n: Vec3, j: UvJacobian) -> Option<f64> {

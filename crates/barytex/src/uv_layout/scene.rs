@@ -44,7 +44,7 @@ fn main_texture(material: &Material) -> Option<(TextureRef, ColorSpace)> {
 /// The uvs `texture` reads on `primitive` (its `texCoord` set, through its texture transform);
 /// `TEXCOORD_0` when the material has no texture.
 fn primitive_uvs(primitive: &Primitive, texture: Option<&TextureRef>) -> Option<Vec<Vec2>> {
-    let set = texture.map_or(0, |t| t.tex_coord);
+    let set = texture.map_or(0, |t| t.mapping.set);
     let uvs = match set {
         0 => primitive.tex_coords0.as_ref(),
         1 => primitive.tex_coords1.as_ref(),
@@ -53,7 +53,7 @@ fn primitive_uvs(primitive: &Primitive, texture: Option<&TextureRef>) -> Option<
     Some(match texture {
         Some(t) => uvs
             .iter()
-            .map(|&uv| t.transform.transform_point2(uv))
+            .map(|&uv| t.mapping.transform.transform_point2(uv))
             .collect(),
         None => uvs.clone(),
     })

@@ -1,0 +1,461 @@
+//! Everything a render does before its passes: the camera, the primitives in world space, the
+//! textures their materials sample (mip chains only where minified), the lights, and the
+//! per-polygon or per-triangle work of flat and hybrid shading.
+
+use std::borrow::Cow;
+use std::time::Instant;
+
+use barytex_gltf::material::{AlphaMode, TextureRef};
+use barytex_gltf::scene::Scene;
+use barytex_shade::Light;
+use barytex_texture::TextureError;
+use barytex_texture::load::ColorSpace;
+use glam::{Mat3, Vec2, Vec3, Vec4};
+
+use crate::lights::{highlight_context, light_terms, shininess, world_lights};
+use crate::material_shader::{ShaderMaterial, WorldPrimitive};
+use crate::textures::{PreparedTexture, Textures};
+use crate::{
+    CameraChoice, RenderCamera, RenderError, RenderOptions, Shading, auto_camera, scene_camera,
+};
+
+/// One primitive ready to draw.
+pub(crate) struct DrawItem<'a> {
+    pub(crate) primitive: WorldPrimitive<'a>,
+    pub(crate) indices: Vec<u32>,
+    /// Under the hybrid mode, the triangles the H-test sent to Phong shading (the rest, in
+    /// `indices`, are shaded Gouraud).
+    pub(crate) phong_indices: Vec<u32>,
+    pub(crate) vertices: Vec<u32>,
+    pub(crate) material: ShaderMaterial,
+    pub(crate) double_sided: bool,
+    pub(crate) flips_winding: bool,
+    pub(crate) blended: bool,
+    /// View-space depth of the primitive's centre (for back-to-front blending).
+    pub(crate) depth: f32,
+    /// Per texture-coordinate set: the largest √(uv area / screen area) of its triangles.
+    pub(crate) uv_per_pixel: [f32; 2],
+}
+
+/// A scene ready for its passes.
+pub(crate) struct Prepared<'a> {
+    pub(crate) camera: RenderCamera,
+    pub(crate) items: Vec<DrawItem<'a>>,
+    /// Draw order: opaque and masked items in scene order, then blended ones back to front.
+    pub(crate) order: Vec<usize>,
+    pub(crate) textures: Textures,
+    pub(crate) lights: Vec<Light>,
+    pub(crate) environment: Option<PreparedTexture>,
+    pub(crate) tangents_generated: usize,
+    pub(crate) hybrid_phong_triangles: usize,
+    pub(crate) hybrid_gouraud_triangles: usize,
+    pub(crate) seconds: f64,
+}
+
+/// Prepares `scene` for the passes `options` ask for.
+///
+/// # Errors
+/// A camera index beyond the scene's, a scene with nothing to frame, or a texture that cannot
+/// be prepared.
+pub(crate) fn prepare<'a>(
+    scene: &'a Scene,
+    options: &RenderOptions,
+) -> Result<Prepared<'a>, RenderError> {
+    let started = Instant::now();
+    let (camera, mut items) = world_items(scene, options)?;
+    let lit = options.shading != Shading::Unlit;
+    let mut textures = Textures::default();
+    let tangents_generated = prepare_textures(scene, options, &mut items, &mut textures)?;
+    let order = draw_order(&items);
+    let lights = world_lights(&scene.lights, &camera);
+    if options.shading == Shading::Flat {
+        for item in &mut items {
+            if item.material.lit {
+                flatten(item, &lights, camera.eye);
+            }
+        }
+    }
+    let environment = match &scene.environment {
+        Some(image) if lit => crate::textures::environment(image)?,
+        _ => None,
+    };
+    let (hybrid_phong_triangles, hybrid_gouraud_triangles) = if options.shading == Shading::Hybrid {
+        split_by_highlight(&mut items, &camera, &lights)
+    } else {
+        (0, 0)
+    };
+    Ok(Prepared {
+        camera,
+        items,
+        order,
+        textures,
+        lights,
+        environment,
+        tangents_generated,
+        hybrid_phong_triangles,
+        hybrid_gouraud_triangles,
+        seconds: started.elapsed().as_secs_f64(),
+    })
+}
+
+/// The camera, and every primitive instance in world space with its material's factors.
+fn world_items<'a>(
+    scene: &'a Scene,
+    options: &RenderOptions,
+) -> Result<(RenderCamera, Vec<DrawItem<'a>>), RenderError> {
+    let camera = choose_camera(scene, options)?;
+    let (width, height) = (options.width, options.height);
+    let view_projection = camera.projection * camera.view;
+    let size = Vec2::new(width as f32, height as f32);
+    let lit = options.shading != Shading::Unlit;
+
+    // Geometry in world space, with what texture preparation needs to know about it.
+    let mut items: Vec<DrawItem<'_>> = Vec::new();
+    for instance in &scene.instances {
+        let normal_matrix = Mat3::from_mat4(instance.world).inverse().transpose();
+        for primitive in &instance.mesh.primitives {
+            let positions: Vec<Vec3> = primitive
+                .positions
+                .iter()
+                .map(|&p| instance.world.transform_point3(p))
+                .collect();
+            let normals = primitive.normals.as_ref().map(|n| {
+                n.iter()
+                    .map(|&v| (normal_matrix * v).normalize_or_zero())
+                    .collect()
+            });
+            let clip: Vec<Vec4> = positions
+                .iter()
+                .map(|p| view_projection * p.extend(1.0))
+                .collect();
+            let uv0 = primitive.tex_coords0.as_deref();
+            let uv1 = primitive.tex_coords1.as_deref();
+            let material = scene.material(primitive.material);
+            let centre = positions.iter().copied().sum::<Vec3>() / positions.len().max(1) as f32;
+            items.push(DrawItem {
+                uv_per_pixel: uv_per_pixel(&clip, [uv0, uv1], &primitive.triangles, size),
+                indices: primitive.triangles.iter().flatten().copied().collect(),
+                phong_indices: Vec::new(),
+                vertices: (0..positions.len() as u32).collect(),
+                primitive: WorldPrimitive {
+                    positions,
+                    normals,
+                    uv0: uv0.map(std::borrow::Cow::Borrowed),
+                    uv1: uv1.map(std::borrow::Cow::Borrowed),
+                    colors: primitive.colors0.as_deref().map(std::borrow::Cow::Borrowed),
+                    lighting: None,
+                    tangents: None,
+                },
+                material: ShaderMaterial {
+                    base_color: material.base_color_factor,
+                    base_texture: None,
+                    emissive: material.emissive_factor,
+                    emissive_texture: None,
+                    occlusion_texture: None,
+                    occlusion_strength: material.occlusion_strength,
+                    metallic_roughness_texture: None,
+                    normal_texture: None,
+                    normal_scale: material.normal_scale,
+                    metallic: material.metallic_factor.clamp(0.0, 1.0),
+                    roughness: material.roughness_factor.clamp(0.0, 1.0),
+                    alpha_mode: material.alpha_mode,
+                    lit: lit && !material.unlit,
+                },
+                double_sided: material.double_sided,
+                flips_winding: instance.flips_winding,
+                blended: material.alpha_mode == AlphaMode::Blend,
+                depth: (camera.view * centre.extend(1.0)).z,
+            });
+        }
+    }
+    Ok((camera, items))
+}
+
+/// Prepares the textures the items' materials sample (only those; mips only where minified),
+/// and the world-space tangents of normal-mapped items. Returns how many primitives had their
+/// tangents generated.
+fn prepare_textures(
+    scene: &Scene,
+    options: &RenderOptions,
+    items: &mut [DrawItem<'_>],
+    textures: &mut Textures,
+) -> Result<usize, RenderError> {
+    let lit = options.shading != Shading::Unlit;
+    let item_materials: Vec<Option<usize>> = scene
+        .instances
+        .iter()
+        .flat_map(|i| i.mesh.primitives.iter().map(|p| p.material))
+        .collect();
+    // The images each item's material samples, looked up once (the probe below runs per
+    // texture over every item).
+    let item_images: Vec<Vec<Option<usize>>> = item_materials
+        .iter()
+        .map(|&m| {
+            let refs = scene.material(m).texture_refs();
+            refs.iter().map(|(t, _)| t.image).collect()
+        })
+        .collect();
+    let minification = |r: &TextureRef, (w, h): (u32, u32)| -> f32 {
+        let det = r
+            .mapping
+            .transform
+            .x_axis
+            .truncate()
+            .perp_dot(r.mapping.transform.y_axis.truncate())
+            .abs();
+        let texels = (w as f32 * h as f32 * det).sqrt();
+        items
+            .iter()
+            .zip(&item_images)
+            .filter(|(_, images)| images.contains(&r.image))
+            .map(|(item, _)| item.uv_per_pixel[(r.mapping.set as usize).min(1)] * texels)
+            .fold(0.0, f32::max)
+    };
+    let mut slots = Vec::with_capacity(items.len());
+    for material in &item_materials {
+        let m = scene.material(*material);
+        let mut slot = |r: &Option<TextureRef>, space| -> Result<_, TextureError> {
+            match r {
+                Some(r) => textures.slot(scene, r, space, options.filter, &minification),
+                None => Ok(None),
+            }
+        };
+        let base = slot(&m.base_color_texture, ColorSpace::Srgb)?;
+        let (emissive, occlusion, metallic_roughness) = if lit && !m.unlit {
+            (
+                slot(&m.emissive_texture, ColorSpace::Srgb)?,
+                slot(&m.occlusion_texture, ColorSpace::Linear)?,
+                slot(&m.metallic_roughness_texture, ColorSpace::Linear)?,
+            )
+        } else {
+            (None, None, None)
+        };
+        // Normal maps only under per-pixel shading, where they can show.
+        let per_pixel = matches!(options.shading, Shading::Phong | Shading::Hybrid);
+        let normal = if lit && !m.unlit && per_pixel {
+            slot(&m.normal_texture, ColorSpace::Linear)?
+        } else {
+            None
+        };
+        slots.push((base, emissive, occlusion, metallic_roughness, normal));
+    }
+    let mut tangents_generated = 0;
+    let primitives = scene
+        .instances
+        .iter()
+        .flat_map(|i| i.mesh.primitives.iter().map(move |p| (i, p)));
+    for ((item, (base, emissive, occlusion, metallic_roughness, normal)), (instance, primitive)) in
+        items.iter_mut().zip(slots).zip(primitives)
+    {
+        item.material.base_texture = base;
+        item.material.emissive_texture = emissive;
+        item.material.occlusion_texture = occlusion;
+        item.material.metallic_roughness_texture = metallic_roughness;
+        item.material.normal_texture = normal;
+        if let Some(slot) = normal {
+            let (tangents, generated) = world_tangents(instance, primitive, slot.mapping.set);
+            tangents_generated += usize::from(generated);
+            item.primitive.tangents = tangents;
+        }
+    }
+    Ok(tangents_generated)
+}
+
+/// Opaque and masked items first, in scene order; blended ones after, back to front.
+fn draw_order(items: &[DrawItem<'_>]) -> Vec<usize> {
+    let (mut order, mut blended): (Vec<usize>, Vec<usize>) =
+        (0..items.len()).partition(|&i| !items[i].blended);
+    blended.sort_by(|&a, &b| items[a].depth.total_cmp(&items[b].depth));
+    order.extend(blended);
+    order
+}
+
+/// Hybrid shading: runs the highlight test on every lit triangle with normals and moves those
+/// with a visible highlight to the items' Phong index lists. Returns the (Phong, Gouraud)
+/// triangle counts.
+fn split_by_highlight(
+    items: &mut [DrawItem<'_>],
+    camera: &RenderCamera,
+    lights: &[Light],
+) -> (usize, usize) {
+    let (mut hybrid_phong, mut hybrid_gouraud) = (0, 0);
+    for item in items.iter_mut() {
+        if !item.material.lit || item.primitive.normals.is_none() {
+            continue;
+        }
+        let m = &item.material;
+        let f0 = Vec3::splat(0.04).lerp(m.base_color.truncate(), m.metallic);
+        let test = highlight_context(camera, lights, f0, m.roughness);
+        let (mut phong, mut gouraud) = (Vec::new(), Vec::new());
+        for t in item.indices.chunks_exact(3) {
+            let p = [t[0], t[1], t[2]].map(|i| {
+                item.primitive
+                    .positions
+                    .get(i as usize)
+                    .copied()
+                    .unwrap_or(Vec3::NAN)
+            });
+            let n = [t[0], t[1], t[2]].map(|i| {
+                item.primitive
+                    .normals
+                    .as_ref()
+                    .and_then(|n| n.get(i as usize))
+                    .copied()
+                    .unwrap_or_default()
+            });
+            let verdict = barytex_shade::HighlightTest::default().run(&test, p, n);
+            if verdict.has_highlight() {
+                phong.extend_from_slice(t);
+            } else {
+                gouraud.extend_from_slice(t);
+            }
+        }
+        hybrid_phong += phong.len() / 3;
+        hybrid_gouraud += gouraud.len() / 3;
+        item.indices = gouraud;
+        item.phong_indices = phong;
+    }
+    (hybrid_phong, hybrid_gouraud)
+}
+
+/// The camera for `options`.
+fn choose_camera(scene: &Scene, options: &RenderOptions) -> Result<RenderCamera, RenderError> {
+    let aspect = options.width as f32 / options.height as f32;
+    match options.camera {
+        CameraChoice::Index(index) => {
+            scene_camera(scene, index, aspect).ok_or(RenderError::NoSuchCamera {
+                index,
+                count: scene.cameras.len(),
+            })
+        }
+        CameraChoice::First if !scene.cameras.is_empty() => scene_camera(scene, 0, aspect)
+            .or_else(|| auto_camera(scene, aspect))
+            .ok_or(RenderError::NothingToFrame),
+        _ => auto_camera(scene, aspect).ok_or(RenderError::NothingToFrame),
+    }
+}
+
+/// √(uv area / screen area) maximised over the triangles, per texture-coordinate set.
+fn uv_per_pixel(
+    clip: &[Vec4],
+    uvs: [Option<&[Vec2]>; 2],
+    triangles: &[[u32; 3]],
+    size: Vec2,
+) -> [f32; 2] {
+    let mut out = [0.0_f32; 2];
+    for t in triangles {
+        let c = t.map(|i| clip.get(i as usize).copied().unwrap_or(Vec4::NAN));
+        if c.iter().any(|p| !p.is_finite() || p.w <= 0.0) {
+            continue;
+        }
+        let s = c.map(|p| Vec2::new(p.x / p.w, p.y / p.w) * size * 0.5);
+        let screen = (s[1] - s[0]).perp_dot(s[2] - s[0]).abs() * 0.5;
+        if screen < 1e-6 {
+            continue;
+        }
+        for (k, set) in uvs.iter().enumerate() {
+            if let Some(uv) = set {
+                let u = t.map(|i| uv.get(i as usize).copied().unwrap_or(Vec2::ZERO));
+                let area = (u[1] - u[0]).perp_dot(u[2] - u[0]).abs() * 0.5;
+                out[k] = out[k].max((area / screen).sqrt());
+            }
+        }
+    }
+    out
+}
+
+/// World-space tangents of a normal-mapped primitive: the file's, else MikkTSpace's (generated
+/// from the positions, normals and the normal map's texture coordinates), the bitangent sign
+/// flipped under a mirroring world matrix. The flag says whether they were generated.
+fn world_tangents(
+    instance: &barytex_gltf::scene::MeshInstance,
+    primitive: &barytex_gltf::mesh::Primitive,
+    tex_coord: u32,
+) -> (Option<Vec<Vec4>>, bool) {
+    let mut generated = false;
+    let object = primitive.tangents.clone().or_else(|| {
+        let uvs = if tex_coord == 1 {
+            primitive.tex_coords1.as_ref()
+        } else {
+            primitive.tex_coords0.as_ref()
+        }?;
+        let mesh = barytex_uv::mesh::TriMesh {
+            positions: primitive.positions.clone(),
+            normals: primitive.normals.clone()?,
+            tangents: Vec::new(),
+            uvs: uvs.clone(),
+            indices: primitive.triangles.clone(),
+        };
+        generated = true;
+        barytex_shade::generate_tangents(&mesh)
+    });
+    let linear = Mat3::from_mat4(instance.world);
+    let sign = if instance.flips_winding { -1.0 } else { 1.0 };
+    let world = object.map(|t| {
+        t.iter()
+            .map(|v| {
+                (linear * v.truncate())
+                    .normalize_or_zero()
+                    .extend(v.w * sign)
+            })
+            .collect()
+    });
+    (world, generated && primitive.tangents.is_none())
+}
+
+/// Flat shading, one evaluation per polygon: unwelds the primitive (three vertices per
+/// triangle) and gives each triangle's vertices the light at its centroid under its face
+/// normal (turned towards the eye), so the shader interpolates a constant.
+fn flatten(item: &mut DrawItem<'_>, lights: &[Light], eye: Vec3) {
+    let p = &item.primitive;
+    let corner = |k: u32| k as usize;
+    let pick2 = |v: &Option<Cow<'_, [Vec2]>>| {
+        v.as_ref().map(|v| {
+            Cow::Owned(
+                item.indices
+                    .iter()
+                    .map(|&k| v.get(corner(k)).copied().unwrap_or_default())
+                    .collect(),
+            )
+        })
+    };
+    let uv0 = pick2(&p.uv0);
+    let uv1 = pick2(&p.uv1);
+    let colors = p.colors.as_ref().map(|v| {
+        Cow::Owned(
+            item.indices
+                .iter()
+                .map(|&k| v.get(corner(k)).copied().unwrap_or(Vec4::ONE))
+                .collect(),
+        )
+    });
+    let positions: Vec<Vec3> = item
+        .indices
+        .iter()
+        .map(|&k| p.positions.get(corner(k)).copied().unwrap_or(Vec3::NAN))
+        .collect();
+    let shininess = shininess(item.material.roughness);
+    let mut lighting = Vec::with_capacity(positions.len());
+    for t in positions.chunks_exact(3) {
+        let centroid = (t[0] + t[1] + t[2]) / 3.0;
+        let view = (eye - centroid).normalize_or_zero();
+        let mut n = (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero();
+        if n.dot(view) < 0.0 {
+            n = -n;
+        }
+        let terms = light_terms(lights, n, view, centroid, shininess);
+        lighting.extend([terms; 3]);
+    }
+    let count = positions.len() as u32;
+    item.primitive = WorldPrimitive {
+        positions,
+        normals: None,
+        uv0,
+        uv1,
+        colors,
+        lighting: Some(lighting),
+        tangents: None,
+    };
+    item.indices = (0..count).collect();
+    item.vertices = (0..count).collect();
+}

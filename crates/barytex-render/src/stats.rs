@@ -1,0 +1,84 @@
+//! What a render did and how long each stage took.
+
+use barytex_raster::{AdaptiveStats, DrawStats};
+
+use crate::passes::Drawn;
+use crate::prepare::Prepared;
+
+/// What a render did and how long each stage took.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct RenderStats {
+    /// Primitives drawn (opaque and masked first, then blended back to front).
+    pub primitives: usize,
+    /// Triangles submitted per pass.
+    pub triangles: usize,
+    /// Fragment and triangle counts, summed over passes.
+    pub draw: DrawStats,
+    /// Passes over the scene (more than one for accumulated and adaptive supersampling).
+    pub passes: u32,
+    /// Mean samples per pixel.
+    pub samples_per_pixel: f64,
+    /// The adaptive sampler's statistics, when it ran.
+    pub adaptive: Option<AdaptiveStats>,
+    /// Textures prepared (image × colour space × filter).
+    pub textures: usize,
+    /// Mip chains built.
+    pub mip_chains: usize,
+    /// Textures whose filter uses mipmaps but which are never minified (no chain built).
+    pub mips_skipped: usize,
+    /// Primitives whose tangents were generated (MikkTSpace) for a normal map.
+    pub tangents_generated: usize,
+    /// Hybrid shading: triangles the highlight test sent to Phong shading, and the rest
+    /// (Gouraud).
+    pub hybrid_phong_triangles: usize,
+    /// Hybrid shading: triangles shaded Gouraud.
+    pub hybrid_gouraud_triangles: usize,
+    /// Varying floats interpolated per fragment, summed over the draws (a primitive split by
+    /// hybrid shading counts twice): only what each material reads at its shading frequency.
+    pub varyings_interpolated: usize,
+    /// Varying floats not interpolated because the material never reads them, summed likewise
+    /// (the full varying is 24 floats: position, normal, two uv sets, colour, Gouraud's vertex
+    /// light, tangent).
+    pub varyings_skipped: usize,
+    /// Seconds preparing geometry, textures and mip chains.
+    pub prepare_seconds: f64,
+    /// Of `prepare_seconds`, those preparing mipmapped textures (level 0's copy and its chain).
+    pub mip_seconds: f64,
+    /// Seconds rasterizing and shading (the two are interleaved per pixel).
+    pub draw_seconds: f64,
+    /// With [`RenderOptions::measure_stages`]: seconds the same passes took with a fragment
+    /// shader that returns a constant (vertex stage, clipping, coverage, depth test,
+    /// interpolation of the varyings, writes). `draw_seconds` minus this is the shading's cost.
+    /// Alpha-masked fragments are not discarded in that pass, so it may do slightly more work.
+    pub raster_seconds: Option<f64>,
+}
+
+impl RenderStats {
+    /// The statistics of a render that prepared `prepared` and drew `drawn`.
+    pub(crate) fn of(prepared: &Prepared<'_>, drawn: &Drawn) -> Self {
+        let items = &prepared.items;
+        Self {
+            primitives: items.len(),
+            triangles: items
+                .iter()
+                .map(|i| (i.indices.len() + i.phong_indices.len()) / 3)
+                .sum(),
+            draw: drawn.draw,
+            passes: drawn.passes,
+            samples_per_pixel: drawn.samples_per_pixel,
+            adaptive: drawn.adaptive.clone(),
+            textures: prepared.textures.list.len(),
+            mip_chains: prepared.textures.mip_chains,
+            mips_skipped: prepared.textures.mips_skipped,
+            tangents_generated: prepared.tangents_generated,
+            hybrid_phong_triangles: prepared.hybrid_phong_triangles,
+            hybrid_gouraud_triangles: prepared.hybrid_gouraud_triangles,
+            varyings_interpolated: drawn.varyings.0,
+            varyings_skipped: drawn.varyings.1,
+            prepare_seconds: prepared.seconds,
+            mip_seconds: prepared.textures.mip_seconds,
+            draw_seconds: drawn.draw_seconds,
+            raster_seconds: drawn.raster_seconds,
+        }
+    }
+}
