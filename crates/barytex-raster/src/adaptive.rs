@@ -62,13 +62,23 @@ pub struct AdaptiveStats {
 
 impl AdaptiveStats {
     /// Mean samples per pixel.
+    ///
+    /// ```
+    /// use barytex_raster::AdaptiveStats;
+    ///
+    /// // Three pixels stopped at 2 samples, one went on to 4.
+    /// let stats = AdaptiveStats { samples: 10, passes: 4, histogram: vec![0, 0, 3, 0, 1] };
+    /// assert_eq!(stats.mean_samples(), 2.5);
+    /// assert_eq!((stats.pixels_at(2), stats.pixels_at(4), stats.pixels_at(40)), (3, 1, 0));
+    /// assert_eq!(AdaptiveStats::default().mean_samples(), 0.0);
+    /// ```
     #[must_use]
     pub fn mean_samples(&self) -> f64 {
         let pixels: u64 = self.histogram.iter().sum();
         self.samples as f64 / pixels.max(1) as f64
     }
 
-    /// Pixels that reached the maximum.
+    /// Pixels that ended with `samples` samples (0 beyond the histogram).
     #[must_use]
     pub fn pixels_at(&self, samples: u32) -> u64 {
         self.histogram.get(samples as usize).copied().unwrap_or(0)

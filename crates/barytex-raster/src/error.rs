@@ -104,6 +104,17 @@ impl TargetLimits {
 
     /// Checks the sides of a `width × height` target: not zero, within the limits.
     ///
+    /// ```
+    /// use barytex_raster::{RasterError, TargetLimits};
+    ///
+    /// let limits = TargetLimits::default();
+    /// assert_eq!(limits.check_sides(1920, 1080), Ok(()));
+    /// assert!(matches!(limits.check_sides(1920, 0),
+    ///     Err(RasterError::InvalidParameter { what: "height", .. })));
+    /// assert_eq!(limits.check_sides(20_000, 1),
+    ///     Err(RasterError::TooLarge { what: "width", requested: 20_000, limit: 16_384 }));
+    /// ```
+    ///
     /// # Errors
     /// [`RasterError::InvalidParameter`] for a zero side, [`RasterError::TooLarge`] beyond a
     /// limit.
@@ -131,6 +142,18 @@ impl TargetLimits {
 
     /// Checks an allocation of `bytes` (`None`: the product overflowed `u64`) against
     /// [`max_bytes`](Self::max_bytes) and the address space; returns it as a `usize`.
+    ///
+    /// ```
+    /// use barytex_raster::{RasterError, TargetLimits};
+    ///
+    /// let limits = TargetLimits { max_bytes: 1 << 20, ..TargetLimits::default() };
+    /// assert_eq!(limits.check_bytes(Some(1 << 20)), Ok(1 << 20));
+    /// assert!(matches!(limits.check_bytes(Some((1 << 20) + 1)),
+    ///     Err(RasterError::TooLarge { what: "bytes", .. })));
+    /// // A product that overflowed: over any finite limit.
+    /// let bytes = u64::MAX.checked_mul(20);
+    /// assert!(matches!(limits.check_bytes(bytes), Err(RasterError::TooLarge { .. })));
+    /// ```
     ///
     /// # Errors
     /// [`RasterError::TooLarge`] beyond the limit (an overflowed product counts as `u64::MAX`

@@ -131,6 +131,14 @@ pub struct Viewport {
 
 impl Viewport {
     /// The whole target, depth [0, 1].
+    ///
+    /// ```
+    /// use barytex_raster::Viewport;
+    ///
+    /// let v = Viewport::full(640, 480);
+    /// assert_eq!((v.x, v.y, v.width, v.height), (0.0, 0.0, 640.0, 480.0));
+    /// assert_eq!((v.min_depth, v.max_depth), (0.0, 1.0));
+    /// ```
     #[must_use]
     pub fn full(width: u32, height: u32) -> Self {
         Self {

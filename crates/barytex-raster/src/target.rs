@@ -289,6 +289,17 @@ impl Framebuffer {
     /// The colour buffer as a linear f32 texture (straight alpha, resolved). Needs the
     /// `texture` feature.
     ///
+    /// ```
+    /// use barytex_raster::{Framebuffer, TargetLimits};
+    /// use glam::Vec4;
+    ///
+    /// let fb = Framebuffer::new(4, 2, Vec4::new(0.5, 0.25, 1.0, 1.0), &TargetLimits::default())?;
+    /// let texture = fb.to_rgba32f()?;
+    /// assert_eq!(texture.size(), (4, 2));
+    /// assert_eq!(texture.linear(3, 1), fb.pixel(3, 1));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
     /// # Errors
     /// A failed allocation.
     #[cfg(feature = "texture")]
@@ -300,6 +311,17 @@ impl Framebuffer {
 
     /// The colour buffer encoded as 8-bit sRGB (correctly rounded, resolved). Needs the
     /// `texture` feature.
+    ///
+    /// ```
+    /// use barytex_raster::{Framebuffer, TargetLimits};
+    /// use glam::Vec4;
+    ///
+    /// // Linear 0.5 is sRGB 187.5/255 (IEC 61966-2-1), alpha stays linear.
+    /// let fb = Framebuffer::new(2, 2, Vec4::new(0.5, 0.0, 1.0, 0.5), &TargetLimits::default())?;
+    /// let image = fb.to_srgba8()?;
+    /// assert_eq!(image.texel(1, 1).map(|t| t.0), Some([188, 0, 255, 128]));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     ///
     /// # Errors
     /// A failed allocation.

@@ -42,10 +42,11 @@ use std::time::Instant;
 
 use barytex_raster::{
     AdaptiveOptions, AdaptiveStats, Blend, CullMode, DrawStats, Framebuffer, FrontFace,
-    PipelineState, SamplePattern, Viewport, draw, render_adaptive, render_supersampled,
+    PipelineState, RasterError, SamplePattern, TargetLimits, Viewport, draw, render_adaptive,
+    render_supersampled,
 };
+use barytex_texture::TextureError;
 use barytex_texture::load::ColorSpace;
-use barytex_texture::{Limits, TextureError};
 use glam::{Mat3, Vec2, Vec3, Vec4};
 
 pub use framing::{CameraSource, RenderCamera, auto_camera, scene_bounds, scene_camera};
@@ -74,8 +75,11 @@ pub enum RenderError {
     },
     /// A parameter out of range (size, sample count).
     InvalidOption(String),
-    /// The target or a texture could not be allocated or built.
+    /// A texture could not be allocated or built.
     Texture(TextureError),
+    /// The target could not be made: an invalid sample count, a size over the limits, a failed
+    /// allocation.
+    Raster(RasterError),
 }
 
 impl fmt::Display for RenderError {
@@ -87,6 +91,7 @@ impl fmt::Display for RenderError {
             }
             Self::InvalidOption(why) => write!(f, "invalid render option: {why}"),
             Self::Texture(e) => write!(f, "{e}"),
+            Self::Raster(e) => write!(f, "{e}"),
         }
     }
 }
@@ -96,6 +101,12 @@ impl std::error::Error for RenderError {}
 impl From<TextureError> for RenderError {
     fn from(e: TextureError) -> Self {
         Self::Texture(e)
+    }
+}
+
+impl From<RasterError> for RenderError {
+    fn from(e: RasterError) -> Self {
+        Self::Raster(e)
     }
 }
 
@@ -755,14 +766,14 @@ pub fn render_with_progress(
         total += &draw_items(fb, shift, false);
         on_pass(passes, planned_passes(options.anti_aliasing));
     };
-    let limits = Limits::default();
+    let limits = TargetLimits::default();
     let background = options.background;
     let drawing = Instant::now();
     let multisampled = |pattern: SamplePattern,
                         draw_scene: &mut dyn FnMut(&mut Framebuffer, Vec2)| {
         let mut fb = Framebuffer::multisampled(width, height, pattern, background, &limits)?;
         draw_scene(&mut fb, Vec2::ZERO);
-        Ok::<_, TextureError>((fb, f64::from(pattern.count())))
+        Ok::<_, RasterError>((fb, f64::from(pattern.count())))
     };
     let mut adaptive = None;
     let (image, samples_per_pixel) = match options.anti_aliasing {
