@@ -83,8 +83,8 @@ pub struct TargetLimits {
 }
 
 impl Default for TargetLimits {
-    /// 16 384 pixels a side (the largest 2D texture Vulkan and Direct3D 11/12 guarantee on
-    /// desktop), 1 GiB a target.
+    /// 16 384 pixels a side (the 2D texture size Direct3D 11 requires of every device,
+    /// `D3D11_REQ_TEXTURE2D_U_OR_V_DIMENSION`, as barytex-texture's default), 1 GiB a target.
     fn default() -> Self {
         Self {
             max_width: 16_384,
