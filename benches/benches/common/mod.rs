@@ -3,8 +3,7 @@
 
 #![allow(dead_code)] // Each benchmark uses its part.
 
-use barytex_raster::{CullMode, Fragment, Framebuffer, PipelineState, Shader, draw};
-use barytex_texture::Limits;
+use barytex_raster::{CullMode, Fragment, Framebuffer, PipelineState, Shader, TargetLimits, draw};
 use euc::Pipeline;
 use euc::buffer::Buffer2d;
 use euc::rasterizer::{BackfaceCullingDisabled, Triangles};
@@ -131,7 +130,7 @@ pub(crate) fn render_barytex(
     lit: bool,
     size: u32,
 ) -> Framebuffer {
-    let mut fb = Framebuffer::new(size, size, Vec4::ZERO, &Limits::default()).expect("size²");
+    let mut fb = Framebuffer::new(size, size, Vec4::ZERO, &TargetLimits::default()).expect("size²");
     let shader = BarytexShader {
         mesh,
         texture,

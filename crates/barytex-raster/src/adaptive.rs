@@ -8,9 +8,9 @@
 //! mask: pixels that are done are neither rasterized into nor shaded. Sample positions follow
 //! the 2D Sobol sequence, so the prefixes of 4, 8, 16 and 32 samples stratify the pixel.
 
-use barytex_texture::{Limits, TextureError};
 use glam::{Vec2, Vec4};
 
+use crate::error::{RasterError, TargetLimits, try_filled};
 use crate::target::Framebuffer;
 
 /// When a pixel is refined and how far.
@@ -62,13 +62,23 @@ pub struct AdaptiveStats {
 
 impl AdaptiveStats {
     /// Mean samples per pixel.
+    ///
+    /// ```
+    /// use barytex_raster::AdaptiveStats;
+    ///
+    /// // Three pixels stopped at 2 samples, one went on to 4.
+    /// let stats = AdaptiveStats { samples: 10, passes: 4, histogram: vec![0, 0, 3, 0, 1] };
+    /// assert_eq!(stats.mean_samples(), 2.5);
+    /// assert_eq!((stats.pixels_at(2), stats.pixels_at(4), stats.pixels_at(40)), (3, 1, 0));
+    /// assert_eq!(AdaptiveStats::default().mean_samples(), 0.0);
+    /// ```
     #[must_use]
     pub fn mean_samples(&self) -> f64 {
         let pixels: u64 = self.histogram.iter().sum();
         self.samples as f64 / pixels.max(1) as f64
     }
 
-    /// Pixels that reached the maximum.
+    /// Pixels that ended with `samples` samples (0 beyond the histogram).
     #[must_use]
     pub fn pixels_at(&self, samples: u32) -> u64 {
         self.histogram.get(samples as usize).copied().unwrap_or(0)
@@ -98,17 +108,58 @@ fn sobol(k: u32) -> Vec2 {
 /// [`render_supersampled`](crate::render_supersampled); the target carries a write mask, which
 /// [`draw`](crate::draw) honours.
 ///
+/// Besides two single-sample targets (each checked against `limits`) it keeps 39 bytes per
+/// pixel of running sums and flags (the sides padded to multiples of [`TILE`](crate::TILE)),
+/// each buffer smaller than a target and allocated fallibly.
+///
+/// ```
+/// use barytex_raster::{
+///     AdaptiveOptions, Fragment, PipelineState, Shader, TargetLimits, Viewport, draw,
+///     render_adaptive,
+/// };
+/// use glam::{Vec3, Vec4};
+///
+/// struct White;
+/// impl Shader for White {
+///     type Vertex = Vec3;
+///     type Varying = f32;
+///     fn vertex(&self, v: &Vec3) -> (Vec4, f32) { (v.extend(1.0), 0.0) }
+///     fn fragment(&self, _: &Fragment<'_, f32>) -> Option<Vec4> { Some(Vec4::ONE) }
+/// }
+/// // A triangle with a slanted edge across a 16 × 16 target.
+/// let tri = [Vec3::new(-1.0, -1.0, 0.5), Vec3::new(1.0, -1.0, 0.5), Vec3::new(-1.0, 0.9, 0.5)];
+/// let options = AdaptiveOptions::default();
+/// let (fb, stats) = render_adaptive(16, 16, Vec4::new(0.0, 0.0, 0.0, 1.0), &options,
+///     &TargetLimits::default(), |target, shift| {
+///         let mut viewport = Viewport::full(16, 16);
+///         viewport.x += shift.x;
+///         viewport.y += shift.y;
+///         let state = PipelineState { viewport: Some(viewport), ..PipelineState::default() };
+///         draw(target, &White, &state, &tri, &[0, 1, 2]);
+///     })?;
+/// // Far from the edge four samples agree; on it pixels get more, up to the maximum.
+/// assert_eq!(fb.pixel(0, 15), Some(Vec4::ONE));
+/// assert_eq!(fb.pixel(15, 0), Some(Vec4::new(0.0, 0.0, 0.0, 1.0)));
+/// assert!(stats.pixels_at(options.min_samples) > 0);
+/// assert!(stats.pixels_at(options.max_samples) > 0);
+/// assert!(stats.mean_samples() > 4.0 && stats.mean_samples() < 40.0);
+/// assert_eq!(stats.histogram.iter().sum::<u64>(), 16 * 16);
+/// # Ok::<(), barytex_raster::RasterError>(())
+/// ```
+///
 /// # Errors
-/// Options out of range (`min_samples < 2`, `max_samples < min_samples`, `max_samples > 4096`,
-/// `batch = 0`, a negative or NaN threshold), or a target that cannot be allocated.
+/// [`RasterError::InvalidParameter`] for options out of range (`min_samples < 2`,
+/// `max_samples < min_samples`, `max_samples > 4096`, `batch = 0`, a negative or NaN threshold
+/// or contrast), checked before anything is allocated; the errors of [`Framebuffer::new`] for
+/// the targets; [`RasterError::OutOfMemory`] for the running sums.
 pub fn render_adaptive(
     width: u32,
     height: u32,
     clear: Vec4,
     options: &AdaptiveOptions,
-    limits: &Limits,
+    limits: &TargetLimits,
     mut draw_pass: impl FnMut(&mut Framebuffer, Vec2),
-) -> Result<(Framebuffer, AdaptiveStats), TextureError> {
+) -> Result<(Framebuffer, AdaptiveStats), RasterError> {
     let o = *options;
     if o.min_samples < 2
         || o.max_samples < o.min_samples
@@ -119,7 +170,7 @@ pub fn render_adaptive(
         || o.contrast.is_nan()
         || o.contrast < 0.0
     {
-        return Err(TextureError::InvalidParameter {
+        return Err(RasterError::InvalidParameter {
             what: "adaptive options",
             reason: "need 2 ≤ min_samples ≤ max_samples ≤ 4096, batch ≥ 1, threshold and contrast ≥ 0",
         });
@@ -128,19 +179,29 @@ pub fn render_adaptive(
     let mut result = Framebuffer::new(width, height, clear, limits)?;
     // Per pixel (tile layout, padding included and never active): running sums.
     let n = result.color.len();
-    let mut sum = vec![Vec4::ZERO; n];
-    let mut sum_sq = vec![Vec4::ZERO; n];
-    let mut count = vec![0_u32; n];
-    pass.set_mask(Some(&|_, _| true));
+    let mut sum = try_filled(n, Vec4::ZERO)?;
+    let mut sum_sq = try_filled(n, Vec4::ZERO)?;
+    let mut count = try_filled(n, 0_u32)?;
+    pass.set_mask(Some(&|_, _| true))?;
+    // The pixels still refined (padding never), a copy taken before each update, and the mask
+    // handed to the passes: allocated once.
     let mut active = pass.mask.take().unwrap_or_default();
+    let mut before = try_filled(n, false)?;
+    let mut mask = try_filled(n, false)?;
     let mut stats = AdaptiveStats::default();
     let mut k = 0;
     while k < o.max_samples && active.contains(&true) {
         let round = if k == 0 { o.min_samples } else { o.batch };
         for _ in 0..round.min(o.max_samples - k) {
             pass.clear(clear);
-            pass.mask = Some(active.clone());
+            mask.copy_from_slice(&active);
+            pass.mask = Some(mask);
             draw_pass(&mut pass, Vec2::splat(0.5) - sobol(k));
+            // Take the mask back (or a new one, should the pass have replaced it).
+            mask = match pass.mask.take() {
+                Some(m) if m.len() == n => m,
+                _ => try_filled(n, false)?,
+            };
             if k == 0 {
                 result.depth.copy_from_slice(&pass.depth);
             }
@@ -156,7 +217,7 @@ pub fn render_adaptive(
             stats.passes += 1;
             k += 1;
         }
-        let before = active.clone();
+        before.copy_from_slice(&active);
         for y in 0..height {
             for x in 0..width {
                 let i = result.pixel_index(x, y);

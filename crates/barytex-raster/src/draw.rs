@@ -58,6 +58,41 @@ impl core::ops::AddAssign<&DrawStats> for DrawStats {
 /// Runs on the current rayon thread pool; the output is bit-identical for any number of threads.
 /// Nothing panics on bad input: out-of-range indices, non-finite or huge positions, zero-area and
 /// fully clipped triangles are dropped and counted in [`DrawStats`].
+///
+/// ```
+/// use barytex_raster::{DepthCompare, DrawStats, Fragment, Framebuffer, PipelineState, Shader,
+///     TargetLimits, draw};
+/// use glam::{Vec3, Vec4};
+///
+/// /// Clip-space positions, one colour per draw.
+/// struct Solid(Vec4);
+/// impl Shader for Solid {
+///     type Vertex = Vec3;
+///     type Varying = f32;
+///     fn vertex(&self, v: &Vec3) -> (Vec4, f32) { (v.extend(1.0), 0.0) }
+///     fn fragment(&self, _: &Fragment<'_, f32>) -> Option<Vec4> { Some(self.0) }
+/// }
+/// let red = Vec4::new(1.0, 0.0, 0.0, 1.0);
+/// let blue = Vec4::new(0.0, 0.0, 1.0, 1.0);
+/// // The lower-left half of the screen at depth 0.5 and a full-screen triangle behind it.
+/// let near = [Vec3::new(-1.0, -1.0, 0.5), Vec3::new(1.0, -1.0, 0.5), Vec3::new(-1.0, 1.0, 0.5)];
+/// let far = [Vec3::new(-1.0, -1.0, 0.9), Vec3::new(3.0, -1.0, 0.9), Vec3::new(-1.0, 3.0, 0.9)];
+/// let mut fb = Framebuffer::new(8, 8, Vec4::ZERO, &TargetLimits::default())?;
+/// let state = PipelineState { depth_compare: Some(DepthCompare::Less), ..PipelineState::default() };
+/// let mut stats = draw(&mut fb, &Solid(red), &state, &near, &[0, 1, 2]);
+/// // Index 7 does not exist: that triangle is dropped and counted, not a panic.
+/// stats += &draw(&mut fb, &Solid(blue), &state, &far, &[0, 1, 2, 0, 1, 7]);
+/// assert_eq!(fb.pixel(0, 7), Some(red)); // bottom-left: the near triangle wins the depth test
+/// assert_eq!(fb.depth(0, 7), Some(0.5));
+/// assert_eq!(fb.pixel(7, 0), Some(blue)); // top-right: only the far one
+/// assert_eq!(stats.triangles_in, 3);
+/// assert_eq!(stats.dropped_bad_index, 1);
+/// // The near triangle covers the 28 pixels with x < y (the centres on the diagonal lie on its
+/// // right edge, which the top-left rule leaves out); there the far one fails the depth test.
+/// assert_eq!(stats.fragments_depth_failed, 28);
+/// assert_eq!(stats.fragments_shaded, 28 + (64 - 28));
+/// # Ok::<(), barytex_raster::RasterError>(())
+/// ```
 pub fn draw<S: Shader>(
     target: &mut Framebuffer,
     shader: &S,

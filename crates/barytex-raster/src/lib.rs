@@ -7,14 +7,19 @@
 //! |---|---|
 //! | the seam | [`Shader`], [`Fragment`] |
 //! | the draw call | [`draw`], [`DrawStats`] |
-//! | state | [`PipelineState`], [`CullMode`], [`FrontFace`], [`Viewport`], [`Scissor`], [`Blend`], [`Interpolation`] |
-//! | targets | [`Framebuffer`] (one or more samples per pixel, tile-major storage) |
+//! | state | [`PipelineState`], [`CullMode`], [`FrontFace`], [`Viewport`], [`Scissor`], [`DepthCompare`], [`Blend`], [`Interpolation`] |
+//! | targets | [`Framebuffer`] (one or more samples per pixel, tile-major storage) under [`TargetLimits`]; errors are [`RasterError`]s |
 //! | anti-aliasing | multisampled targets ([`Framebuffer::multisampled`] with a [`SamplePattern`]: regular, per-pixel jitter, the GPUs' standard positions) shaded per pixel (MSAA) or per sample; [`render_supersampled`] by accumulating passes; [`render_adaptive`] adds samples only where they disagree (up to 40) |
 //! | the seed's scanline backend | [`scanline::scanline_fill`]: Edge Table and Active Edge List, exact with rational arithmetic |
 //!
 //! Conventions: clip space is Vulkan's/wgpu's (`−w ≤ x, y ≤ w`, `0 ≤ z ≤ w`, y up); screen
 //! space is y down with pixel centres at `(x + ½, y + ½)`; counter-clockwise (in clip space) is
 //! front by default.
+//!
+//! Dependencies: barytex-interp, glam and rayon. The optional `texture` feature adds
+//! barytex-texture (with its image decoders) for `Framebuffer::to_rgba32f` and
+//! `Framebuffer::to_srgba8`, which return its `Texture2d`; [`Framebuffer::to_linear_rgba`] reads
+//! the resolved pixels without it.
 #![forbid(unsafe_code)]
 
 mod adaptive;
@@ -22,6 +27,7 @@ mod assemble;
 mod clip;
 mod draw;
 mod edge;
+mod error;
 mod samples;
 pub mod scanline;
 mod shader;
@@ -33,8 +39,11 @@ mod tile;
 pub use adaptive::{AdaptiveOptions, AdaptiveStats, render_adaptive};
 pub use draw::{DrawStats, draw};
 pub use edge::{MAX_COORDINATE, SUBPIXEL_BITS};
+pub use error::{RasterError, TargetLimits};
 pub use samples::{MAX_GRID, MAX_SAMPLES, SamplePattern};
 pub use shader::{Fragment, Shader};
-pub use state::{Blend, CullMode, FrontFace, Interpolation, PipelineState, Scissor, Viewport};
+pub use state::{
+    Blend, CullMode, DepthCompare, FrontFace, Interpolation, PipelineState, Scissor, Viewport,
+};
 pub use supersample::render_supersampled;
 pub use target::{Framebuffer, TILE};

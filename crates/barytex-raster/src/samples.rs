@@ -3,10 +3,10 @@
 //! functions, so coverage at a sample is decided exactly, with the same top-left rule as at
 //! pixel centres.
 
-use barytex_texture::TextureError;
 use glam::Vec2;
 
 use crate::edge::SUBPIXEL_BITS;
+use crate::error::RasterError;
 
 /// The most samples a pixel of a multisampled target may have (coverage is a 32-bit mask).
 pub const MAX_SAMPLES: u32 = 32;
@@ -82,6 +82,15 @@ impl SamplePattern {
     pub const CENTRE: Self = Self::Regular { n: 1 };
 
     /// Samples per pixel (saturating: a pattern beyond `u32::MAX` samples reports `u32::MAX`).
+    ///
+    /// ```
+    /// use barytex_raster::SamplePattern;
+    ///
+    /// assert_eq!(SamplePattern::CENTRE.count(), 1);
+    /// assert_eq!(SamplePattern::Regular { n: 3 }.count(), 9);
+    /// assert_eq!(SamplePattern::Standard { count: 16 }.count(), 16);
+    /// assert_eq!(SamplePattern::Regular { n: u32::MAX }.count(), u32::MAX);
+    /// ```
     #[must_use]
     pub fn count(self) -> u32 {
         match self {
@@ -92,18 +101,31 @@ impl SamplePattern {
 
     /// Checks the pattern: at most [`MAX_SAMPLES`] samples, a standard count of 1, 2, 4, 8 or 16.
     ///
+    /// ```
+    /// use barytex_raster::{RasterError, SamplePattern};
+    ///
+    /// assert_eq!(SamplePattern::Standard { count: 8 }.validate(), Ok(()));
+    /// assert_eq!(SamplePattern::Jittered { n: 5, seed: 1 }.validate(), Ok(()));
+    /// // 6 × 6 = 36 samples do not fit a 32-bit coverage mask.
+    /// assert!(matches!(
+    ///     SamplePattern::Regular { n: 6 }.validate(),
+    ///     Err(RasterError::InvalidParameter { what: "sample count", .. })
+    /// ));
+    /// assert!(SamplePattern::Standard { count: 3 }.validate().is_err());
+    /// ```
+    ///
     /// # Errors
-    /// [`TextureError::InvalidParameter`] naming what is wrong.
-    pub fn validate(self) -> Result<(), TextureError> {
+    /// [`RasterError::InvalidParameter`] naming what is wrong.
+    pub fn validate(self) -> Result<(), RasterError> {
         match self {
             Self::Standard { count } if !matches!(count, 1 | 2 | 4 | 8 | 16) => {
-                Err(TextureError::InvalidParameter {
+                Err(RasterError::InvalidParameter {
                     what: "sample count",
                     reason: "standard patterns have 1, 2, 4, 8 or 16 samples",
                 })
             }
             Self::Regular { n } | Self::Jittered { n, .. } if n > 5 => {
-                Err(TextureError::InvalidParameter {
+                Err(RasterError::InvalidParameter {
                     what: "sample count",
                     reason: "at most 5 × 5 samples per pixel (a 32-bit coverage mask)",
                 })
@@ -150,6 +172,20 @@ impl SamplePattern {
     /// Sample `k` of pixel `(x, y)` as an offset in pixels from the pixel's top-left corner,
     /// exactly where a multisampled [`Framebuffer`](crate::Framebuffer) tests coverage (on the
     /// 1/256-pixel grid).
+    ///
+    /// ```
+    /// use barytex_raster::SamplePattern;
+    /// use glam::Vec2;
+    ///
+    /// // Vulkan's 4× positions, in sixteenths of a pixel: (6, 2), (14, 6), (2, 10), (10, 14).
+    /// let p = SamplePattern::Standard { count: 4 };
+    /// assert_eq!(p.sample_offset(0, 0, 1), Vec2::new(14.0, 6.0) / 16.0);
+    /// assert_eq!(p.sample_offset(9, 4, 1), p.sample_offset(0, 0, 1)); // the same in every pixel
+    /// // Jitter differs from pixel to pixel but stays in its cell of the 2 × 2 grid.
+    /// let j = SamplePattern::Jittered { n: 2, seed: 5 };
+    /// let o = j.sample_offset(3, 7, 3);
+    /// assert!(o.x >= 0.5 && o.x < 1.0 && o.y >= 0.5 && o.y < 1.0);
+    /// ```
     #[must_use]
     pub fn sample_offset(self, x: u32, y: u32, k: u32) -> Vec2 {
         let (ox, oy) = self.fixed_offset(i64::from(x), i64::from(y), k);
@@ -168,6 +204,18 @@ impl SamplePattern {
     /// other than 1, 2, 4, 8 or 16 (which [`validate`](Self::validate) refuses) gives the one
     /// centre sample, as [`sample_offset`](Self::sample_offset) places it (it used to give
     /// `count` copies of the centre: 4 G of them for `u32::MAX`).
+    ///
+    /// ```
+    /// use barytex_raster::SamplePattern;
+    /// use glam::Vec2;
+    ///
+    /// assert_eq!(SamplePattern::CENTRE.offsets(), vec![Vec2::splat(0.5)]);
+    /// assert_eq!(
+    ///     SamplePattern::Regular { n: 2 }.offsets(),
+    ///     vec![Vec2::new(0.25, 0.25), Vec2::new(0.75, 0.25), Vec2::new(0.25, 0.75), Vec2::new(0.75, 0.75)]
+    /// );
+    /// assert_eq!(SamplePattern::Jittered { n: 100, seed: 0 }.offsets().len(), 64 * 64);
+    /// ```
     #[must_use]
     pub fn offsets(self) -> Vec<Vec2> {
         let this = match self {

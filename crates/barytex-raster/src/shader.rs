@@ -119,6 +119,39 @@ impl<V: Copy> PieceContext<V> {
 impl<V: Interpolate> Fragment<'_, V> {
     /// The varying's change per pixel to the right: the exact derivative of the interpolation
     /// at the pixel centre (analytic, not a 2×2-quad difference).
+    ///
+    /// ```
+    /// use std::sync::Mutex;
+    ///
+    /// use barytex_raster::{Fragment, Framebuffer, PipelineState, Shader, TargetLimits, draw};
+    /// use glam::{Vec3, Vec4};
+    ///
+    /// /// Interpolates clip-space x and records its four derivatives at every pixel.
+    /// struct Derivatives(Mutex<Vec<[f32; 4]>>);
+    /// impl Shader for Derivatives {
+    ///     type Vertex = Vec3;
+    ///     type Varying = f32;
+    ///     fn vertex(&self, v: &Vec3) -> (Vec4, f32) { (v.extend(1.0), v.x) }
+    ///     fn fragment(&self, f: &Fragment<'_, f32>) -> Option<Vec4> {
+    ///         let d = [f.ddx(), f.ddy(), f.ddx_quad(), f.ddy_quad()];
+    ///         self.0.lock().expect("not poisoned").push(d);
+    ///         Some(Vec4::ONE)
+    ///     }
+    /// }
+    /// let tri = [Vec3::new(-1.0, -1.0, 0.5), Vec3::new(3.0, -1.0, 0.5), Vec3::new(-1.0, 3.0, 0.5)];
+    /// let shader = Derivatives(Mutex::new(Vec::new()));
+    /// let mut fb = Framebuffer::new(8, 8, Vec4::ZERO, &TargetLimits::default())?;
+    /// draw(&mut fb, &shader, &PipelineState::default(), &tri, &[0, 1, 2]);
+    /// let seen = shader.0.into_inner().expect("not poisoned");
+    /// assert_eq!(seen.len(), 64);
+    /// // x spans 2 units of clip space over 8 pixels: 0.25 per pixel right, nothing down; with
+    /// // w = 1 everywhere the quad differences agree with the analytic derivatives.
+    /// for [dx, dy, qx, qy] in seen {
+    ///     assert!((dx - 0.25).abs() < 1e-6 && dy.abs() < 1e-6, "{dx} {dy}");
+    ///     assert!((qx - 0.25).abs() < 1e-6 && qy.abs() < 1e-6, "{qx} {qy}");
+    /// }
+    /// # Ok::<(), barytex_raster::RasterError>(())
+    /// ```
     #[must_use]
     pub fn ddx(&self) -> V {
         let w = self.piece.derivative_weights(self.lambda, 0);

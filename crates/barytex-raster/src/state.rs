@@ -1,7 +1,59 @@
 //! Fixed-function state of a draw: culling, winding, viewport, scissor, depth, blending,
 //! interpolation and derivative modes.
 
-use barytex_texture::sampler::CompareFunction;
+/// The depth test: when a fragment's depth passes against the stored one.
+///
+/// The eight comparisons of Vulkan's `VkCompareOp`, WebGPU's `GPUCompareFunction` and OpenGL's
+/// `glDepthFunc`, with IEEE 754 comparisons: a NaN depth fails every test but `NotEqual` and
+/// `Always`.
+///
+/// ```
+/// use barytex_raster::DepthCompare;
+///
+/// assert!(DepthCompare::Less.passes(0.25, 0.5));
+/// assert!(!DepthCompare::Less.passes(0.5, 0.5));
+/// assert!(DepthCompare::LessEqual.passes(0.5, 0.5));
+/// assert!(DepthCompare::NotEqual.passes(f32::NAN, 0.5));
+/// assert!(!DepthCompare::GreaterEqual.passes(f32::NAN, 0.5));
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum DepthCompare {
+    /// Never passes.
+    Never,
+    /// `fragment < stored` (the default).
+    #[default]
+    Less,
+    /// `fragment == stored`.
+    Equal,
+    /// `fragment <= stored`.
+    LessEqual,
+    /// `fragment > stored`.
+    Greater,
+    /// `fragment != stored`.
+    NotEqual,
+    /// `fragment >= stored`.
+    GreaterEqual,
+    /// Always passes.
+    Always,
+}
+
+impl DepthCompare {
+    /// Whether a fragment at depth `fragment` passes against `stored`.
+    #[inline]
+    #[must_use]
+    pub fn passes(self, fragment: f32, stored: f32) -> bool {
+        match self {
+            Self::Never => false,
+            Self::Less => fragment < stored,
+            Self::Equal => fragment == stored,
+            Self::LessEqual => fragment <= stored,
+            Self::Greater => fragment > stored,
+            Self::NotEqual => fragment != stored,
+            Self::GreaterEqual => fragment >= stored,
+            Self::Always => true,
+        }
+    }
+}
 
 /// Which faces are discarded.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -79,6 +131,14 @@ pub struct Viewport {
 
 impl Viewport {
     /// The whole target, depth [0, 1].
+    ///
+    /// ```
+    /// use barytex_raster::Viewport;
+    ///
+    /// let v = Viewport::full(640, 480);
+    /// assert_eq!((v.x, v.y, v.width, v.height), (0.0, 0.0, 640.0, 480.0));
+    /// assert_eq!((v.min_depth, v.max_depth), (0.0, 1.0));
+    /// ```
     #[must_use]
     pub fn full(width: u32, height: u32) -> Self {
         Self {
@@ -117,7 +177,7 @@ pub struct PipelineState {
     /// `None`: no scissor.
     pub scissor: Option<Scissor>,
     /// Depth test (`None`: off); a fragment passes when `compare(fragment, stored)` holds.
-    pub depth_compare: Option<CompareFunction>,
+    pub depth_compare: Option<DepthCompare>,
     /// Whether passing fragments write their depth.
     pub depth_write: bool,
     /// Colour blending.
@@ -140,7 +200,7 @@ impl Default for PipelineState {
             front_face: FrontFace::Ccw,
             viewport: None,
             scissor: None,
-            depth_compare: Some(CompareFunction::Less),
+            depth_compare: Some(DepthCompare::Less),
             depth_write: true,
             blend: Blend::Replace,
             interpolation: Interpolation::Perspective,

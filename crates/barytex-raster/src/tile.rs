@@ -2,7 +2,6 @@
 //! stage and blending, into the tile's own slice of the target.
 
 use barytex_interp::Interpolate;
-use barytex_texture::sampler::CompareFunction;
 use glam::{UVec2, Vec4};
 
 use crate::assemble::Piece;
@@ -30,19 +29,6 @@ impl TileTarget<'_> {
     #[inline]
     fn local(&self, x: i64, y: i64) -> usize {
         ((y - self.origin.1) * i64::from(TILE) + (x - self.origin.0)) as usize
-    }
-}
-
-fn depth_passes(op: CompareFunction, fragment: f32, stored: f32) -> bool {
-    match op {
-        CompareFunction::Never => false,
-        CompareFunction::Less => fragment < stored,
-        CompareFunction::Equal => fragment == stored,
-        CompareFunction::LessEqual => fragment <= stored,
-        CompareFunction::Greater => fragment > stored,
-        CompareFunction::NotEqual => fragment != stored,
-        CompareFunction::GreaterEqual => fragment >= stored,
-        CompareFunction::Always => true,
     }
 }
 
@@ -107,7 +93,7 @@ fn shade_single<S: Shader>(
         }
         let z = (0..3).map(|i| lambda[i] * piece.depth[i]).sum::<f64>() as f32;
         if let Some(op) = state.depth_compare
-            && !depth_passes(op, z, tile.depth[index])
+            && !op.passes(z, tile.depth[index])
         {
             stats.fragments_depth_failed += 1;
             return;
@@ -248,10 +234,7 @@ fn shade_multi<S: Shader>(
             let z = (0..3).map(|i| lambda[i] * piece.depth[i]).sum::<f64>() as f32;
             depths[k as usize] = z;
             let stored = tile.depth[base + k as usize];
-            if state
-                .depth_compare
-                .is_none_or(|op| depth_passes(op, z, stored))
-            {
+            if state.depth_compare.is_none_or(|op| op.passes(z, stored)) {
                 passed |= 1 << k;
             }
         }

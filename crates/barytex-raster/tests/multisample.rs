@@ -4,10 +4,10 @@
 
 mod common;
 
+use barytex_raster::TargetLimits;
 use barytex_raster::{
     Blend, Fragment, Framebuffer, Interpolation, PipelineState, SamplePattern, Shader, draw,
 };
-use barytex_texture::Limits;
 use common::no_depth;
 use glam::{Mat4, Vec2, Vec3, Vec4};
 use proptest::prelude::*;
@@ -83,7 +83,7 @@ proptest! {
             .chunks(2)
             .map(|c| Vec2::new(c[0] as f32, c[1] as f32) / 16.0)
             .collect();
-        let mut fb = Framebuffer::multisampled(SIZE, SIZE, pattern, Vec4::ZERO, &Limits::default())
+        let mut fb = Framebuffer::multisampled(SIZE, SIZE, pattern, Vec4::ZERO, &TargetLimits::default())
             .expect("small");
         let shader = Flat { size: SIZE as f32, color: Vec4::ONE };
         draw(&mut fb, &shader, &no_depth(), &v, &[0, 1, 2]);
@@ -112,9 +112,14 @@ fn shared_edges_cover_every_sample_exactly_once() {
     let (vertices, indices) = common::jittered_grid(7, SIZE, SIZE, 0x9E37_79B9);
     for pattern in PATTERNS {
         for sample_shading in [false, true] {
-            let mut fb =
-                Framebuffer::multisampled(SIZE, SIZE, pattern, Vec4::ZERO, &Limits::default())
-                    .expect("small");
+            let mut fb = Framebuffer::multisampled(
+                SIZE,
+                SIZE,
+                pattern,
+                Vec4::ZERO,
+                &TargetLimits::default(),
+            )
+            .expect("small");
             let shader = Flat {
                 size: SIZE as f32,
                 color: Vec4::new(1.0, 1.0, 1.0, 0.5),
@@ -151,8 +156,9 @@ fn shading_rate_follows_the_state() {
     };
     let pattern = SamplePattern::Standard { count: 8 };
     let run = |sample_shading: bool| {
-        let mut fb = Framebuffer::multisampled(SIZE, SIZE, pattern, Vec4::ZERO, &Limits::default())
-            .expect("small");
+        let mut fb =
+            Framebuffer::multisampled(SIZE, SIZE, pattern, Vec4::ZERO, &TargetLimits::default())
+                .expect("small");
         let state = PipelineState {
             sample_shading,
             ..no_depth()
@@ -206,8 +212,9 @@ fn msaa_approaches_the_exact_area_coverage() {
         color: Vec4::ONE,
     };
     let errors = |pattern: SamplePattern| {
-        let mut fb = Framebuffer::multisampled(SIZE, SIZE, pattern, Vec4::ZERO, &Limits::default())
-            .expect("small");
+        let mut fb =
+            Framebuffer::multisampled(SIZE, SIZE, pattern, Vec4::ZERO, &TargetLimits::default())
+                .expect("small");
         draw(&mut fb, &shader, &no_depth(), &v, &[0, 1, 2]);
         let (mut abs, mut signed, mut n) = (0.0, 0.0, 0.0);
         for y in 0..SIZE {
@@ -277,7 +284,8 @@ fn affine_spans_trade_error_for_fewer_divisions() {
     ];
     let indices = [0, 1, 2, 0, 2, 3];
     let render = |interpolation: Interpolation| {
-        let mut fb = Framebuffer::new(SIZE, SIZE, Vec4::ZERO, &Limits::default()).expect("small");
+        let mut fb =
+            Framebuffer::new(SIZE, SIZE, Vec4::ZERO, &TargetLimits::default()).expect("small");
         let state = PipelineState {
             interpolation,
             ..no_depth()
@@ -333,9 +341,9 @@ fn the_write_mask_protects_pixels() {
         size: SIZE as f32,
         color: Vec4::ONE,
     };
-    let mut fb = Framebuffer::new(SIZE, SIZE, Vec4::ZERO, &Limits::default()).expect("small");
+    let mut fb = Framebuffer::new(SIZE, SIZE, Vec4::ZERO, &TargetLimits::default()).expect("small");
     let keep = |x: u32, y: u32| (x / 3 + y / 5).is_multiple_of(2);
-    fb.set_mask(Some(&keep));
+    fb.set_mask(Some(&keep)).expect("small");
     let stats = draw(&mut fb, &shader, &no_depth(), &v, &[0, 1, 2]);
     let mut kept = 0;
     for y in 0..SIZE {
@@ -370,7 +378,7 @@ fn multisampled_output_is_deterministic() {
                 SIZE,
                 SamplePattern::Jittered { n: 3, seed: 5 },
                 Vec4::ZERO,
-                &Limits::default(),
+                &TargetLimits::default(),
             )
             .expect("small");
             let shader = Flat {

@@ -5,10 +5,10 @@ mod common;
 
 use std::sync::atomic::Ordering;
 
+use barytex_raster::TargetLimits;
 use barytex_raster::{
     CullMode, DrawStats, Fragment, Framebuffer, Interpolation, PipelineState, Shader, draw,
 };
-use barytex_texture::Limits;
 use common::{Counter, no_depth};
 use glam::{Mat4, Vec2, Vec3, Vec4};
 use proptest::prelude::*;
@@ -38,7 +38,7 @@ proptest! {
     fn meshes_are_watertight(n in 2_u32..24, seed in any::<u64>(), w in 8_u32..80, h in 8_u32..80) {
         let (vertices, indices) = jittered_grid(n, w, h, seed);
         let counter = Counter::new(w, h);
-        let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &Limits::default()).expect("small");
+        let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &TargetLimits::default()).expect("small");
         let stats = draw(&mut fb, &counter, &no_depth(), &vertices, &indices);
         for (i, c) in counter.counts.iter().enumerate() {
             prop_assert_eq!(c.load(Ordering::Relaxed), 1, "pixel {} covered wrongly", i);
@@ -56,7 +56,7 @@ proptest! {
             .map(|b| Vec4::from_array(b.map(f32::from_bits)))
             .collect();
         let counter = Counter::new(16, 16);
-        let mut fb = Framebuffer::new(16, 16, Vec4::ZERO, &Limits::default()).expect("small");
+        let mut fb = Framebuffer::new(16, 16, Vec4::ZERO, &TargetLimits::default()).expect("small");
         let stats = draw(&mut fb, &counter, &no_depth(), &vertices, &indices);
         let accounted = stats.dropped_bad_index + stats.dropped_non_finite + stats.clipped_away
             + stats.culled + stats.degenerate;
@@ -79,7 +79,7 @@ fn top_left_rule_on_pixel_centres() {
     ];
     let vertices: Vec<Vec4> = corners.iter().map(|&p| clip_of(p, w, h)).collect();
     let counter = Counter::new(w, h);
-    let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &Limits::default()).expect("small");
+    let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &TargetLimits::default()).expect("small");
     draw(
         &mut fb,
         &counter,
@@ -164,7 +164,7 @@ fn perspective_correct_varyings_and_derivatives_are_exact() {
         view_projection: perspective(fov, w as f32 / h as f32, 0.1, 100.0),
     };
     let (vertices, indices) = ground_plane();
-    let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &Limits::default()).expect("small");
+    let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &TargetLimits::default()).expect("small");
     let state = PipelineState {
         cull: CullMode::None,
         ..PipelineState::default()
@@ -233,7 +233,7 @@ fn quad_derivatives_are_close_but_less_exact_than_analytic() {
         view_projection: perspective(fov, w as f32 / h as f32, 0.1, 100.0),
     };
     let (vertices, indices) = ground_plane();
-    let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &Limits::default()).expect("small");
+    let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &TargetLimits::default()).expect("small");
     let state = PipelineState {
         cull: CullMode::None,
         ..PipelineState::default()
@@ -281,7 +281,7 @@ fn affine_interpolation_is_visibly_wrong_under_perspective() {
         view_projection: perspective(fov, w as f32 / h as f32, 0.1, 100.0),
     };
     let (vertices, indices) = ground_plane();
-    let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &Limits::default()).expect("small");
+    let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &TargetLimits::default()).expect("small");
     let state = PipelineState {
         cull: CullMode::None,
         interpolation: Interpolation::Affine,
@@ -317,7 +317,7 @@ fn near_plane_crossing_triangles_are_clipped_not_dropped() {
         Vec4::new(0.0, 2.0, -1.5, -1.0),
     ];
     let counter = Counter::new(w, h);
-    let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &Limits::default()).expect("small");
+    let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &TargetLimits::default()).expect("small");
     let stats = draw(&mut fb, &counter, &no_depth(), &vertices, &[0, 1, 2]);
     assert_eq!(stats.clipped, 1, "{stats:?}");
     assert!(stats.fragments_shaded > 20, "{stats:?}");
@@ -340,7 +340,7 @@ fn bad_geometry_is_dropped_and_counted() {
         Vec4::new(0.5, 0.5, 0.5, 1.0),
     ];
     let counter = Counter::new(8, 8);
-    let mut fb = Framebuffer::new(8, 8, Vec4::ZERO, &Limits::default()).expect("small");
+    let mut fb = Framebuffer::new(8, 8, Vec4::ZERO, &TargetLimits::default()).expect("small");
     let indices = [0, 1, 3, 0, 1, 99, 0, 0, 0, 0, 1, 4, 0, 1, 2];
     let stats = draw(&mut fb, &counter, &no_depth(), &vertices, &indices);
     assert_eq!(stats.triangles_in, 5);
@@ -355,7 +355,7 @@ fn bad_geometry_is_dropped_and_counted() {
     );
 }
 
-/// The same scene rendered with 1, 2 and 7 threads gives identical bytes.
+/// The same scene rendered with 1, 2 and 7 threads gives identical colours, bit for bit.
 #[test]
 fn output_is_bit_identical_for_any_thread_count() {
     let (w, h) = (200_u32, 150_u32);
@@ -376,13 +376,18 @@ fn output_is_bit_identical_for_any_thread_count() {
             .build()
             .expect("pool");
         pool.install(|| {
-            let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &Limits::default()).expect("small");
+            let mut fb =
+                Framebuffer::new(w, h, Vec4::ZERO, &TargetLimits::default()).expect("small");
             let state = PipelineState {
                 cull: CullMode::None,
                 ..PipelineState::default()
             };
             draw(&mut fb, &shader, &state, &vertices, &indices);
-            fb.to_srgba8().expect("encode").into_texels()
+            fb.to_linear_rgba()
+                .expect("resolve")
+                .iter()
+                .flat_map(|p| p.to_array().map(f32::to_bits))
+                .collect::<Vec<u32>>()
         })
     };
     let one = render(1);

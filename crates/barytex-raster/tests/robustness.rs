@@ -8,7 +8,7 @@ use barytex_raster::{
     AdaptiveOptions, CullMode, Fragment, Framebuffer, Interpolation, MAX_COORDINATE, PipelineState,
     SamplePattern, Shader, TILE, Viewport, draw, render_adaptive, render_supersampled,
 };
-use barytex_texture::{Limits, TextureError};
+use barytex_raster::{RasterError, TargetLimits};
 use glam::{Mat4, Vec2, Vec3, Vec4};
 
 // ---------------------------------------------------------------------------------------------
@@ -17,12 +17,17 @@ use glam::{Mat4, Vec2, Vec3, Vec4};
 
 #[test]
 fn framebuffer_refuses_zero_sides_and_sizes_over_the_limits() {
-    let limits = Limits::default();
-    for (w, h) in [(0, 10), (10, 0), (0, 0)] {
+    let limits = TargetLimits::default();
+    // The zero side is named (the width when both are zero), and the message names no data.
+    for (w, h, side) in [(0, 10, "width"), (10, 0, "height"), (0, 0, "width")] {
         let r = Framebuffer::new(w, h, Vec4::ZERO, &limits);
         assert!(
-            matches!(r, Err(TextureError::Empty { width, height }) if (width, height) == (w, h)),
+            matches!(r, Err(RasterError::InvalidParameter { what, .. }) if what == side),
             "{w}×{h}: {r:?}"
+        );
+        assert_eq!(
+            r.expect_err("zero side").to_string(),
+            format!("{side}: a target needs at least one pixel per side")
         );
         let r = Framebuffer::multisampled(
             w,
@@ -31,19 +36,22 @@ fn framebuffer_refuses_zero_sides_and_sizes_over_the_limits() {
             Vec4::ZERO,
             &limits,
         );
-        assert!(matches!(r, Err(TextureError::Empty { .. })), "{r:?}");
+        assert!(
+            matches!(r, Err(RasterError::InvalidParameter { what, .. }) if what == side),
+            "{r:?}"
+        );
     }
     // Sides beyond the limits, before anything is allocated (u32::MAX² would be 368 EB).
     let r = Framebuffer::new(u32::MAX, u32::MAX, Vec4::ZERO, &limits);
     assert!(
-        matches!(r, Err(TextureError::TooLarge { what: "width", .. })),
+        matches!(r, Err(RasterError::TooLarge { what: "width", .. })),
         "{r:?}"
     );
     let r = Framebuffer::new(16, 16_385, Vec4::ZERO, &limits);
     assert!(
         matches!(
             r,
-            Err(TextureError::TooLarge {
+            Err(RasterError::TooLarge {
                 what: "height",
                 requested: 16_385,
                 ..
@@ -51,34 +59,57 @@ fn framebuffer_refuses_zero_sides_and_sizes_over_the_limits() {
         ),
         "{r:?}"
     );
-    // 20 bytes per sample: a 16 × 16 target with 16 samples is 81 920 bytes.
-    let tight = Limits {
-        max_bytes: 81_919,
-        ..Limits::default()
+    // 20 bytes per sample of the target padded to whole 64 × 64 tiles (what is allocated): a
+    // 16 × 16 target with 16 samples is one tile, 64 · 64 · 16 · 20 = 1 310 720 bytes.
+    const { assert!(TILE == 64) };
+    let tight = TargetLimits {
+        max_bytes: 1_310_719,
+        ..TargetLimits::default()
     };
     let pattern = SamplePattern::Standard { count: 16 };
     let r = Framebuffer::multisampled(16, 16, pattern, Vec4::ZERO, &tight);
-    assert!(
-        matches!(
-            r,
-            Err(TextureError::TooLarge {
-                what: "bytes",
-                requested: 81_920,
-                limit: 81_919
-            })
-        ),
-        "{r:?}"
+    assert_eq!(
+        r,
+        Err(RasterError::TooLarge {
+            what: "bytes",
+            requested: 1_310_720,
+            limit: 1_310_719
+        })
     );
-    let enough = Limits {
-        max_bytes: 81_920,
-        ..Limits::default()
+    let enough = TargetLimits {
+        max_bytes: 1_310_720,
+        ..TargetLimits::default()
     };
     let fb = Framebuffer::multisampled(16, 16, pattern, Vec4::ZERO, &enough).expect("at the limit");
     assert_eq!(fb.samples(), 16);
+    // A one-pixel-wide column is padded to a tile's width: 64 · 16 384 · 25 · 20 = 524 288 000
+    // bytes are counted (the unpadded 1 · 16 384 · 25 · 20 would be 64 times fewer).
+    let r = Framebuffer::multisampled(
+        1,
+        16_384,
+        SamplePattern::Regular { n: 5 },
+        Vec4::ZERO,
+        &TargetLimits {
+            max_bytes: 524_287_999,
+            ..limits
+        },
+    );
+    assert_eq!(
+        r,
+        Err(RasterError::TooLarge {
+            what: "bytes",
+            requested: 524_288_000,
+            limit: 524_287_999
+        })
+    );
+    // Without limits a product beyond the address space is an error, not an abort: 2³² · 2³²
+    // pixels overflow u64.
+    let r = Framebuffer::new(u32::MAX, u32::MAX, Vec4::ZERO, &TargetLimits::UNLIMITED);
+    assert_eq!(r, Err(RasterError::OutOfMemory { bytes: u64::MAX }));
     // The default limits refuse a 16 384² single-sample target (5 GiB at 20 B/px).
     let r = Framebuffer::new(16_384, 16_384, Vec4::ZERO, &limits);
     assert!(
-        matches!(r, Err(TextureError::TooLarge { what: "bytes", .. })),
+        matches!(r, Err(RasterError::TooLarge { what: "bytes", .. })),
         "{r:?}"
     );
 }
@@ -94,11 +125,11 @@ fn framebuffer_refuses_invalid_sample_patterns() {
         SamplePattern::Jittered { n: 6, seed: 1 },
         SamplePattern::Regular { n: u32::MAX },
     ] {
-        let r = Framebuffer::multisampled(8, 8, pattern, Vec4::ZERO, &Limits::default());
+        let r = Framebuffer::multisampled(8, 8, pattern, Vec4::ZERO, &TargetLimits::default());
         assert!(
             matches!(
                 r,
-                Err(TextureError::InvalidParameter {
+                Err(RasterError::InvalidParameter {
                     what: "sample count",
                     ..
                 })
@@ -112,10 +143,10 @@ fn framebuffer_refuses_invalid_sample_patterns() {
         0,
         SamplePattern::Standard { count: 3 },
         Vec4::ZERO,
-        &Limits::default(),
+        &TargetLimits::default(),
     );
     assert!(
-        matches!(r, Err(TextureError::InvalidParameter { .. })),
+        matches!(r, Err(RasterError::InvalidParameter { .. })),
         "{r:?}"
     );
 }
@@ -134,7 +165,7 @@ fn sample_pattern_validate_and_count() {
         assert!(
             matches!(
                 r,
-                Err(TextureError::InvalidParameter {
+                Err(RasterError::InvalidParameter {
                     what: "sample count",
                     ..
                 })
@@ -174,7 +205,7 @@ fn sample_pattern_validate_and_count() {
         4,
         SamplePattern::Regular { n: 0 },
         Vec4::ONE,
-        &Limits::default(),
+        &TargetLimits::default(),
     )
     .expect("n = 0 is one sample");
     assert_eq!(fb.samples(), 1);
@@ -197,7 +228,7 @@ fn invalid_standard_counts_give_one_centre_offset() {
         4,
         Vec4::ZERO,
         SamplePattern::Standard { count: u32::MAX },
-        &Limits::default(),
+        &TargetLimits::default(),
         |_, _| passes += 1,
     );
     assert!(r.is_ok(), "{r:?}");
@@ -216,7 +247,7 @@ fn pixel_and_depth_outside_the_target_are_none() {
     // 10 × 7 lies inside one 64 × 64 tile: the padding pixels exist in memory but are outside.
     const { assert!(TILE > 10) };
     for pattern in [SamplePattern::CENTRE, SamplePattern::Standard { count: 4 }] {
-        let fb = Framebuffer::multisampled(10, 7, pattern, Vec4::ONE, &Limits::default())
+        let fb = Framebuffer::multisampled(10, 7, pattern, Vec4::ONE, &TargetLimits::default())
             .expect("small");
         assert_eq!(fb.pixel(9, 6), Some(Vec4::ONE));
         assert_eq!(fb.depth(9, 6), Some(1.0));
@@ -376,7 +407,7 @@ fn bad_viewports_are_degenerate_or_draw_nothing_outside() {
     ];
     for (what, viewport, degenerate) in cases {
         let shader = Counter::new(W, H);
-        let mut fb = Framebuffer::new(W, H, Vec4::ZERO, &Limits::default()).expect("small");
+        let mut fb = Framebuffer::new(W, H, Vec4::ZERO, &TargetLimits::default()).expect("small");
         let state = PipelineState {
             cull: CullMode::None,
             depth_compare: None,
@@ -409,7 +440,7 @@ fn nan_depth_range_never_panics_and_fails_the_depth_test() {
     // A NaN depth range gives NaN fragment depths: `Less` is false for NaN, so nothing passes.
     const W: u32 = 16;
     let shader = Counter::new(W, W);
-    let mut fb = Framebuffer::new(W, W, Vec4::ZERO, &Limits::default()).expect("small");
+    let mut fb = Framebuffer::new(W, W, Vec4::ZERO, &TargetLimits::default()).expect("small");
     let state = PipelineState {
         cull: CullMode::None,
         viewport: Some(Viewport {
@@ -472,11 +503,10 @@ fn plane_scene(w: u32, h: u32) -> (PlaneUv, Vec<(Vec3, Vec2)>, Vec<u32>) {
 /// Every bit of the resolved colour and the depth.
 fn bits(fb: &Framebuffer) -> Vec<u32> {
     let mut out: Vec<u32> = fb
-        .to_rgba32f()
+        .to_linear_rgba()
         .expect("resolve")
-        .texels()
         .iter()
-        .flat_map(|t| t.0.map(f32::to_bits))
+        .flat_map(|p| p.to_array().map(f32::to_bits))
         .collect();
     for y in 0..fb.height() {
         for x in 0..fb.width() {
@@ -488,8 +518,8 @@ fn bits(fb: &Framebuffer) -> Vec<u32> {
 
 fn draw_plane(w: u32, h: u32, pattern: SamplePattern, state: &PipelineState) -> Framebuffer {
     let (shader, vertices, indices) = plane_scene(w, h);
-    let mut fb =
-        Framebuffer::multisampled(w, h, pattern, Vec4::ZERO, &Limits::default()).expect("small");
+    let mut fb = Framebuffer::multisampled(w, h, pattern, Vec4::ZERO, &TargetLimits::default())
+        .expect("small");
     let state = PipelineState {
         cull: CullMode::None,
         ..*state
@@ -605,13 +635,20 @@ fn adaptive_option_errors_are_refused_before_drawing() {
     ];
     for (what, options) in bad {
         let mut passes = 0;
-        let r = render_adaptive(8, 8, Vec4::ZERO, &options, &Limits::default(), |_, _| {
-            passes += 1;
-        });
+        let r = render_adaptive(
+            8,
+            8,
+            Vec4::ZERO,
+            &options,
+            &TargetLimits::default(),
+            |_, _| {
+                passes += 1;
+            },
+        );
         assert!(
             matches!(
                 r,
-                Err(TextureError::InvalidParameter {
+                Err(RasterError::InvalidParameter {
                     what: "adaptive options",
                     ..
                 })
@@ -648,25 +685,35 @@ fn adaptive_option_errors_are_refused_before_drawing() {
             },
         ),
     ] {
-        let r = render_adaptive(4, 4, Vec4::ZERO, &options, &Limits::default(), |_, _| {});
+        let r = render_adaptive(
+            4,
+            4,
+            Vec4::ZERO,
+            &options,
+            &TargetLimits::default(),
+            |_, _| {},
+        );
         assert!(r.is_ok(), "{what}: {r:?}");
     }
     // Target errors as Framebuffer::new.
-    let r = render_adaptive(0, 4, Vec4::ZERO, &good, &Limits::default(), |_, _| {});
-    assert!(matches!(r, Err(TextureError::Empty { .. })), "{r:?}");
+    let r = render_adaptive(0, 4, Vec4::ZERO, &good, &TargetLimits::default(), |_, _| {});
+    assert!(
+        matches!(r, Err(RasterError::InvalidParameter { what: "width", .. })),
+        "{r:?}"
+    );
     let r = render_adaptive(
         64,
         64,
         Vec4::ZERO,
         &good,
-        &Limits {
+        &TargetLimits {
             max_bytes: 1000,
-            ..Limits::default()
+            ..TargetLimits::default()
         },
         |_, _| {},
     );
     assert!(
-        matches!(r, Err(TextureError::TooLarge { what: "bytes", .. })),
+        matches!(r, Err(RasterError::TooLarge { what: "bytes", .. })),
         "{r:?}"
     );
     // render_supersampled: the same target errors, and any pattern (it is not validated).
@@ -675,17 +722,20 @@ fn adaptive_option_errors_are_refused_before_drawing() {
         0,
         Vec4::ZERO,
         SamplePattern::CENTRE,
-        &Limits::default(),
+        &TargetLimits::default(),
         |_, _| {},
     );
-    assert!(matches!(r, Err(TextureError::Empty { .. })), "{r:?}");
+    assert!(
+        matches!(r, Err(RasterError::InvalidParameter { what: "height", .. })),
+        "{r:?}"
+    );
     let mut passes = 0;
     let r = render_supersampled(
         4,
         4,
         Vec4::ZERO,
         SamplePattern::Standard { count: 3 },
-        &Limits::default(),
+        &TargetLimits::default(),
         |_, _| passes += 1,
     );
     assert!(r.is_ok(), "{r:?}");
@@ -739,7 +789,7 @@ fn supersampled_and_adaptive_renders_are_bit_identical_for_any_thread_count() {
             h,
             Vec4::ZERO,
             SamplePattern::Jittered { n: 3, seed: 11 },
-            &Limits::default(),
+            &TargetLimits::default(),
             |fb, shift| draw_shifted(fb, shift, &PipelineState::default()),
         )
         .expect("small");
@@ -751,7 +801,7 @@ fn supersampled_and_adaptive_renders_are_bit_identical_for_any_thread_count() {
             h,
             Vec4::ZERO,
             &AdaptiveOptions::default(),
-            &Limits::default(),
+            &TargetLimits::default(),
             |fb, shift| draw_shifted(fb, shift, &PipelineState::default()),
         )
         .expect("small");

@@ -6,9 +6,9 @@ mod common;
 use std::ops::{Add, Div, Mul, Sub};
 use std::sync::atomic::Ordering;
 
+use barytex_raster::TargetLimits;
 use barytex_raster::scanline::{SampleRule, Scalar, ScanVertex, scanline_fill};
 use barytex_raster::{CullMode, Framebuffer, PipelineState, draw};
-use barytex_texture::Limits;
 use common::Counter;
 use glam::Vec4;
 use num_bigint::BigInt;
@@ -144,7 +144,7 @@ proptest! {
             })
             .collect();
         let counter = Counter::new(SIZE, SIZE);
-        let mut fb = Framebuffer::new(SIZE, SIZE, Vec4::ZERO, &Limits::default()).expect("small");
+        let mut fb = Framebuffer::new(SIZE, SIZE, Vec4::ZERO, &TargetLimits::default()).expect("small");
         let state = PipelineState { cull: CullMode::None, depth_compare: None, ..PipelineState::default() };
         draw(&mut fb, &counter, &state, &vertices, &[0, 1, 2]);
         let edge: Vec<u32> = counter.counts.iter().map(|c| c.load(Ordering::Relaxed)).collect();

@@ -1,10 +1,10 @@
 //! Supersampling: a half-plane edge against its exact per-pixel area coverage.
 
+use barytex_raster::TargetLimits;
 use barytex_raster::{
     AdaptiveOptions, CullMode, Fragment, Framebuffer, PipelineState, SamplePattern, Shader,
     Viewport, draw, render_adaptive, render_supersampled,
 };
-use barytex_texture::Limits;
 use glam::{Vec2, Vec4};
 
 const SIZE: u32 = 32;
@@ -60,7 +60,7 @@ fn render(pattern: SamplePattern) -> Framebuffer {
         SIZE,
         Vec4::new(0.0, 0.0, 0.0, 1.0),
         pattern,
-        &Limits::default(),
+        &TargetLimits::default(),
         |fb, shift| {
             let state = PipelineState {
                 cull: CullMode::None,
@@ -148,7 +148,7 @@ fn adaptive_supersampling_refines_only_the_edge() {
         SIZE,
         Vec4::new(0.0, 0.0, 0.0, 1.0),
         &options,
-        &Limits::default(),
+        &TargetLimits::default(),
         |fb, shift| {
             let state = PipelineState {
                 cull: CullMode::None,
@@ -173,7 +173,7 @@ fn adaptive_supersampling_refines_only_the_edge() {
         SIZE,
         Vec4::new(0.0, 0.0, 0.0, 1.0),
         &uniform,
-        &Limits::default(),
+        &TargetLimits::default(),
         |fb, shift| {
             let state = PipelineState {
                 cull: CullMode::None,
@@ -222,5 +222,5 @@ fn adaptive_supersampling_refines_only_the_edge() {
         min_samples: 1,
         ..options
     };
-    assert!(render_adaptive(4, 4, Vec4::ZERO, &bad, &Limits::default(), |_, _| {}).is_err());
+    assert!(render_adaptive(4, 4, Vec4::ZERO, &bad, &TargetLimits::default(), |_, _| {}).is_err());
 }

@@ -44,7 +44,7 @@ mod textures;
 use std::fmt;
 
 use barytex_gltf::scene::Scene;
-use barytex_raster::Framebuffer;
+use barytex_raster::{Framebuffer, RasterError};
 use barytex_texture::TextureError;
 
 pub use framing::{CameraSource, RenderCamera, auto_camera, scene_bounds, scene_camera};
@@ -68,8 +68,11 @@ pub enum RenderError {
     },
     /// A parameter out of range (size, sample count).
     InvalidOption(String),
-    /// The target or a texture could not be allocated or built.
+    /// A texture could not be allocated or built.
     Texture(TextureError),
+    /// The target could not be made: an invalid sample count, a size over the limits, a failed
+    /// allocation.
+    Raster(RasterError),
 }
 
 impl fmt::Display for RenderError {
@@ -81,6 +84,7 @@ impl fmt::Display for RenderError {
             }
             Self::InvalidOption(why) => write!(f, "invalid render option: {why}"),
             Self::Texture(e) => write!(f, "{e}"),
+            Self::Raster(e) => write!(f, "{e}"),
         }
     }
 }
@@ -90,6 +94,12 @@ impl std::error::Error for RenderError {}
 impl From<TextureError> for RenderError {
     fn from(e: TextureError) -> Self {
         Self::Texture(e)
+    }
+}
+
+impl From<RasterError> for RenderError {
+    fn from(e: RasterError) -> Self {
+        Self::Raster(e)
     }
 }
 

@@ -6,9 +6,9 @@ use std::time::Instant;
 
 use barytex_raster::{
     AdaptiveOptions, AdaptiveStats, Blend, CullMode, DrawStats, Framebuffer, FrontFace,
-    PipelineState, SamplePattern, Viewport, draw, render_adaptive, render_supersampled,
+    PipelineState, RasterError, SamplePattern, TargetLimits, Viewport, draw, render_adaptive,
+    render_supersampled,
 };
-use barytex_texture::{Limits, TextureError};
 use glam::{Vec2, Vec3};
 
 use crate::material_shader::{Frequency, MaterialShader};
@@ -171,14 +171,14 @@ pub(crate) fn draw_passes(
         total += &draw_items(fb, shift, false);
         on_pass(passes, planned_passes(options.anti_aliasing));
     };
-    let limits = Limits::default();
+    let limits = TargetLimits::default();
     let background = options.background;
     let drawing = Instant::now();
     let multisampled = |pattern: SamplePattern,
                         draw_scene: &mut dyn FnMut(&mut Framebuffer, Vec2)| {
         let mut fb = Framebuffer::multisampled(width, height, pattern, background, &limits)?;
         draw_scene(&mut fb, Vec2::ZERO);
-        Ok::<_, TextureError>((fb, f64::from(pattern.count())))
+        Ok::<_, RasterError>((fb, f64::from(pattern.count())))
     };
     let mut adaptive = None;
     let (image, samples_per_pixel) = match options.anti_aliasing {

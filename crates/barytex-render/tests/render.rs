@@ -8,6 +8,7 @@ use std::collections::HashMap;
 use std::path::PathBuf;
 
 use barytex_gltf::{LoadOptions, Scene, load_path};
+use barytex_raster::RasterError;
 use barytex_render::{
     AntiAliasing, CameraChoice, Filter, RenderError, RenderOptions, Shading, auto_camera, render,
     scene_bounds,
@@ -217,7 +218,10 @@ fn bad_options_are_errors() {
                 ..small(8, 8)
             }
         ),
-        Err(RenderError::Texture(_))
+        Err(RenderError::Raster(RasterError::InvalidParameter {
+            what: "sample count",
+            ..
+        }))
     ));
 }
 

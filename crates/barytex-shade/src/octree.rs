@@ -9,8 +9,7 @@
 //!   ([`CoverageQuadtree`]) that records which pixels are covered: a node whose projection is
 //!   fully covered is skipped with its whole subtree ([`render_front_to_back`]).
 
-use barytex_raster::{CullMode, Fragment, Framebuffer, PipelineState, Shader, draw};
-use barytex_texture::sampler::CompareFunction;
+use barytex_raster::{CullMode, DepthCompare, Fragment, Framebuffer, PipelineState, Shader, draw};
 use glam::{UVec3, Vec3, Vec4};
 
 use crate::Camera;
@@ -420,7 +419,7 @@ pub fn render_front_to_back(
     };
     let state = PipelineState {
         cull: CullMode::Back,
-        depth_compare: Some(CompareFunction::Less),
+        depth_compare: Some(DepthCompare::Less),
         depth_write: true,
         ..PipelineState::default()
     };

@@ -65,9 +65,9 @@ impl<'a> SurfaceShader<'a> {
     /// Plain Phong shading of `scene`: add maps with struct update syntax.
     ///
     /// ```
-    /// use barytex_raster::{draw, Framebuffer, PipelineState};
+    /// use barytex_raster::{draw, Framebuffer, PipelineState, TargetLimits};
     /// use barytex_shade::{mesh_vertices, Camera, Light, PhongMaterial, ShadeContext, SurfaceShader, TextureUse, ViewVector};
-    /// use barytex_texture::{procedural::Checkerboard, Limits};
+    /// use barytex_texture::procedural::Checkerboard;
     /// use glam::{Vec3, Vec4};
     ///
     /// let scene = ShadeContext {
@@ -81,10 +81,10 @@ impl<'a> SurfaceShader<'a> {
     /// // A checkered sphere: the texture is the diffuse reflectance.
     /// let shader = SurfaceShader { colour: Some((&checker, TextureUse::Diffuse)), ..SurfaceShader::new(&scene) };
     /// let (vertices, indices) = mesh_vertices(&barytex_uv::mesh::sphere(32, 16).expect("valid"));
-    /// let mut fb = Framebuffer::new(64, 64, Vec4::ZERO, &Limits::default())?;
+    /// let mut fb = Framebuffer::new(64, 64, Vec4::ZERO, &TargetLimits::default())?;
     /// let stats = draw(&mut fb, &shader, &PipelineState::default(), &vertices, &indices);
     /// assert!(stats.fragments_shaded > 1000);
-    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// # Ok::<(), barytex_raster::RasterError>(())
     /// ```
     #[must_use]
     pub fn new(scene: &'a ShadeContext) -> Self {

@@ -2,17 +2,17 @@
 //! with a coverage quadtree skips hidden subtrees; both match a depth-tested rendering.
 
 use barytex_raster::Framebuffer;
+use barytex_raster::TargetLimits;
 use barytex_shade::{
     Camera, CoverageQuadtree, Octree, child_order, render_back_to_front, render_depth_tested,
     render_front_to_back,
 };
-use barytex_texture::Limits;
 use glam::{UVec3, Vec3, Vec4};
 
 const SIZE: u32 = 128;
 
 fn target() -> Framebuffer {
-    Framebuffer::new(SIZE, SIZE, Vec4::ZERO, &Limits::default()).expect("small")
+    Framebuffer::new(SIZE, SIZE, Vec4::ZERO, &TargetLimits::default()).expect("small")
 }
 
 fn camera(eye: Vec3) -> Camera {

@@ -14,11 +14,9 @@ use std::fmt::Write as _;
 use std::sync::atomic::{AtomicU32, Ordering};
 
 use barytex_raster::{
-    Blend, CullMode, Fragment, Framebuffer, FrontFace, Interpolation, PipelineState, SamplePattern,
-    Scissor, Shader, draw,
+    Blend, CullMode, DepthCompare, Fragment, Framebuffer, FrontFace, Interpolation, PipelineState,
+    SamplePattern, Scissor, Shader, TargetLimits, draw,
 };
-use barytex_texture::Limits;
-use barytex_texture::sampler::CompareFunction;
 use glam::{Vec2, Vec4};
 
 use super::word;
@@ -75,7 +73,7 @@ pub fn raster_soup_input(
         } else {
             FrontFace::Ccw
         },
-        depth_compare: (s & 8 != 0).then_some(CompareFunction::LessEqual),
+        depth_compare: (s & 8 != 0).then_some(DepthCompare::LessEqual),
         interpolation: if s & 16 != 0 {
             Interpolation::Affine
         } else {
@@ -179,8 +177,9 @@ pub fn check_raster_soup(bytes: &[u8]) -> Result<(), String> {
         counts: (0..SIDE * SIDE).map(|_| AtomicU32::new(0)).collect(),
         samples: (0..SIDE * SIDE * 32).map(|_| AtomicU32::new(0)).collect(),
     };
-    let mut fb = Framebuffer::multisampled(SIDE, SIDE, pattern, Vec4::ZERO, &Limits::default())
-        .map_err(|e| e.to_string())?;
+    let mut fb =
+        Framebuffer::multisampled(SIDE, SIDE, pattern, Vec4::ZERO, &TargetLimits::default())
+            .map_err(|e| e.to_string())?;
     let stats = draw(&mut fb, &recorder, &state, &vertices, &indices);
     if stats.triangles_in != (indices.len() / 3) as u64 {
         return Err(format!("{stats:?} for {} indices", indices.len()));

@@ -1,9 +1,9 @@
 //! Shared scene and image comparison for the shader tests.
 #![allow(dead_code, unreachable_pub)]
 
+use barytex_raster::TargetLimits;
 use barytex_raster::{Framebuffer, PipelineState, Shader, draw};
 use barytex_shade::{Camera, Light, PhongMaterial, ShadeContext, ViewVector};
-use barytex_texture::Limits;
 use glam::{Vec3, Vec4};
 
 pub const SIZE: u32 = 128;
@@ -38,7 +38,7 @@ pub fn scene() -> ShadeContext {
 }
 
 pub fn render<S: Shader>(shader: &S, vertices: &[S::Vertex], indices: &[u32]) -> Framebuffer {
-    let mut fb = Framebuffer::new(SIZE, SIZE, Vec4::ZERO, &Limits::default()).expect("small");
+    let mut fb = Framebuffer::new(SIZE, SIZE, Vec4::ZERO, &TargetLimits::default()).expect("small");
     draw(
         &mut fb,
         shader,
@@ -95,7 +95,7 @@ pub fn from_pixels(size: u32, pixels: &[(u32, u32, Vec4)]) -> Framebuffer {
         ]);
         indices.extend([base, base + 1, base + 2, base, base + 2, base + 3]);
     }
-    let mut fb = Framebuffer::new(size, size, Vec4::ZERO, &Limits::default()).expect("small");
+    let mut fb = Framebuffer::new(size, size, Vec4::ZERO, &TargetLimits::default()).expect("small");
     let state = PipelineState {
         cull: barytex_raster::CullMode::None,
         depth_compare: None,

@@ -5,9 +5,8 @@
 
 use barytex_raster::{
     AdaptiveOptions, CullMode, Fragment, Framebuffer, Interpolation, PipelineState, SamplePattern,
-    Shader, Viewport, draw, render_adaptive, render_supersampled,
+    Shader, TargetLimits, Viewport, draw, render_adaptive, render_supersampled,
 };
-use barytex_texture::Limits;
 use glam::{DVec3, Mat4, Vec2, Vec3, Vec4};
 
 use super::{ErrorStats, Row, Section, Settings, Table};
@@ -100,7 +99,8 @@ fn perspective_table(settings: Settings, runs: usize) -> Table {
             ..PipelineState::default()
         };
         let (seconds, fb) = median_frame_seconds(runs, || {
-            let mut fb = Framebuffer::new(w, h, Vec4::ZERO, &Limits::default()).expect("small");
+            let mut fb =
+                Framebuffer::new(w, h, Vec4::ZERO, &TargetLimits::default()).expect("small");
             draw(&mut fb, &shader, &state, &vertices, &indices);
             fb
         });
@@ -194,7 +194,7 @@ fn anti_aliasing_table(settings: Settings, runs: usize) -> (Table, String) {
         size: Vec2::new(w as f32, h as f32),
     };
     let black = Vec4::new(0.0, 0.0, 0.0, 1.0);
-    let limits = Limits::default();
+    let limits = TargetLimits::default();
     let state = PipelineState {
         cull: CullMode::None,
         depth_compare: None,

@@ -5,7 +5,8 @@
 
 use barytex_interp::{NormalInterpolation, interpolate_normal};
 use barytex_raster::{
-    Framebuffer, PipelineState, SamplePattern, Shader, Viewport, draw, render_supersampled,
+    Framebuffer, PipelineState, SamplePattern, Shader, TargetLimits, Viewport, draw,
+    render_supersampled,
 };
 use barytex_shade::{
     Camera, ColouredShader, FastPhongShader, GouraudShader, HighlightTest, HybridShader, Light,
@@ -14,7 +15,6 @@ use barytex_shade::{
 };
 use barytex_testkit::seeded::XorShift;
 use barytex_testkit::sphere;
-use barytex_texture::Limits;
 use barytex_uv::TriMesh;
 use glam::{Vec2, Vec3, Vec4};
 
@@ -53,7 +53,7 @@ fn scene() -> ShadeContext {
 }
 
 fn frame<S: Shader>(size: u32, shader: &S, vertices: &[S::Vertex], indices: &[u32]) -> Framebuffer {
-    let mut fb = Framebuffer::new(size, size, Vec4::ZERO, &Limits::default()).expect("small");
+    let mut fb = Framebuffer::new(size, size, Vec4::ZERO, &TargetLimits::default()).expect("small");
     draw(
         &mut fb,
         shader,
@@ -93,7 +93,7 @@ fn frequencies_table(mesh: &TriMesh, label: &str, size: u32, runs: usize) -> (Ta
         size,
         Vec4::ZERO,
         SamplePattern::Regular { n: 4 },
-        &Limits::default(),
+        &TargetLimits::default(),
         move |fb: &mut Framebuffer, shift: Vec2| {
             let state = PipelineState {
                 viewport: Some(Viewport {
