@@ -1,5 +1,6 @@
-//! Distance attenuation of point and spot lights (seed 004): the physically right `1/d²` changes
-//! too little far away and too fast close up, so the seed uses the aesthetic compromise
+//! Distance attenuation of point and spot lights (Foley et al., *Computer Graphics: Principles and
+//! Practice*, 2nd ed., 1990, §16.1): the physically right `1/d²` changes too little far away and
+//! too fast close up, so the book uses the aesthetic compromise
 //! `f_att = min(1/(c1 + c2·d + c3·d²), 1)`.
 
 /// The coefficients of `f_att = min(1/(c1 + c2·d + c3·d²), 1)`.
