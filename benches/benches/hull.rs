@@ -1,5 +1,5 @@
-//! Criterion benchmarks of the 2D convex hull with its Rust peers side by side, on the inputs of
-//! REFERENCES.md's speed anchor: 10⁶ points uniform in a square and 10⁶ points on a circle.
+//! Criterion benchmarks of the 2D convex hull with its Rust peers side by side, on two standard
+//! inputs: 10⁶ points uniform in a square and 10⁶ points on a circle.
 //!
 //! Peers get the same points converted exactly to f64: geo 0.33's `ConvexHull` trait on a
 //! `MultiPoint` (its default, QuickHull, collecting the coordinates first), geo's `quick_hull` and

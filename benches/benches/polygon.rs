@@ -1,5 +1,7 @@
-//! Generalized barycentric coordinates over convex polygons, against the triangle-fan split
-//! they replace (seed 004), in one criterion run.
+//! Generalized barycentric coordinates over convex polygons (Wachspress 1975; Floater, "Mean value
+//! coordinates", 2003), against the triangle-fan split they replace (whose result depends on the
+//! split: Foley et al., *Computer Graphics: Principles and Practice*, 2nd ed., 1990, §16.2), in
+//! one criterion run.
 //!
 //! For a quad, a pentagon and a 16-gon (seeded, perturbed regular polygons, each with a point
 //! strictly inside from random convex weights), every method writes one weight per vertex:

@@ -9,7 +9,8 @@
 //!   nearest filtering, no anti-aliasing), texture preparation included — what `barytex render
 //!   --shading unlit --filter nearest --aa none` costs, for scale (euc has no such renderer).
 //!
-//! Without `../shared/fixtures` it prints a note and measures nothing.
+//! Without the glTF sample models (`$BARYTEX_FIXTURES`, else `../shared/fixtures`: see
+//! `barytex_testkit::fixtures_dir`) it prints a note and measures nothing.
 //!
 //! Run with `cargo bench -p barytex-benches --bench scene`.
 

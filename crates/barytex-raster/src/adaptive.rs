@@ -1,7 +1,8 @@
-//! Adaptive supersampling (seed 000: "selectively up to 40 samples"): every pixel gets a few
-//! samples, and only pixels whose samples disagree (or, after the first round, whose mean stands
-//! out from a neighbour's) get more, batch by batch, until their mean is known well enough or
-//! they reach the maximum.
+//! Adaptive supersampling (pixels "selectively supersampled up to a maximum of 40 times", as in
+//! Figure IX.9 of Buss, *3D Computer Graphics*, 2003): every pixel gets a few samples, and only
+//! pixels whose samples disagree (or, after the first round, whose mean stands out from a
+//! neighbour's) get more, batch by batch, until their mean is known well enough or they reach the
+//! maximum.
 //!
 //! Each batch is a set of passes over the whole scene with the viewport shifted by the sample
 //! offset, as in [`render_supersampled`](crate::render_supersampled), but drawn through a write
@@ -18,7 +19,7 @@ use crate::target::Framebuffer;
 pub struct AdaptiveOptions {
     /// Samples every pixel gets (at least 2: one sample has no spread).
     pub min_samples: u32,
-    /// The most samples a pixel gets (the seed's 40).
+    /// The most samples a pixel gets (40 in Buss's Figure IX.9).
     pub max_samples: u32,
     /// Samples added per refinement round.
     pub batch: u32,

@@ -10,7 +10,7 @@
 //! | state | [`PipelineState`], [`CullMode`], [`FrontFace`], [`Viewport`], [`Scissor`], [`DepthCompare`], [`Blend`], [`Interpolation`] |
 //! | targets | [`Framebuffer`] (one or more samples per pixel, tile-major storage) under [`TargetLimits`]; errors are [`RasterError`]s |
 //! | anti-aliasing | multisampled targets ([`Framebuffer::multisampled`] with a [`SamplePattern`]: regular, per-pixel jitter, the GPUs' standard positions) shaded per pixel (MSAA) or per sample; [`render_supersampled`] by accumulating passes; [`render_adaptive`] adds samples only where they disagree (up to 40) |
-//! | the seed's scanline backend | [`scanline::scanline_fill`]: Edge Table and Active Edge List, exact with rational arithmetic |
+//! | the scanline backend (Schaefer's lecture slides) | [`scanline::scanline_fill`]: Edge Table and Active Edge List, exact with rational arithmetic |
 //!
 //! Conventions: clip space is Vulkan's/wgpu's (`−w ≤ x, y ≤ w`, `0 ≤ z ≤ w`, y up); screen
 //! space is y down with pixel centres at `(x + ½, y + ½)`; counter-clockwise (in clip space) is
@@ -20,6 +20,21 @@
 //! barytex-texture (with its image decoders) for `Framebuffer::to_rgba32f` and
 //! `Framebuffer::to_srgba8`, which return its `Texture2d`; [`Framebuffer::to_linear_rgba`] reads
 //! the resolved pixels without it.
+//!
+//! # References
+//! - S. Schaefer, *Shading/Texturing*, lecture slides, Texas A&M University: interpolating over
+//!   polygons with an Edge Table and an Active Edge List (`maxY`, `currentX`, `xIncr`,
+//!   `currentF`, `fIncr`, then `dF` along each span), worked on the triangle A = (0, 0),
+//!   B = (1, 5), C = (4, 2).
+//! - J. D. Foley, A. van Dam, S. K. Feiner, J. F. Hughes, *Computer Graphics: Principles and
+//!   Practice*, 2nd ed., Addison-Wesley, 1990, §3.6 "Filling Polygons" (the edge table and
+//!   active-edge table scanline fill).
+//! - S. R. Buss, *3D Computer Graphics: A Mathematical Introduction with OpenGL*, Cambridge
+//!   University Press, 2003: hyperbolic (perspective-correct) interpolation, §IV.5 and Figure
+//!   V.2 (affine interpolation's wrong foreshortening); regular and jittered supersampling,
+//!   Figure V.7; pixels selectively supersampled up to 40 times, Figure IX.9.
+//! - R. L. Cook, "Stochastic sampling in computer graphics", *ACM Transactions on Graphics* 5(1),
+//!   1986 (jittered sampling).
 #![forbid(unsafe_code)]
 
 mod adaptive;

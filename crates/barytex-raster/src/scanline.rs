@@ -1,14 +1,16 @@
-//! The scanline polygon fill of seed 003: an **Edge Table** bucketed by first scanline, an
-//! **Active Edge List** whose entries keep `maxY`, `currentX`, `xIncr`, `currentF`, `fIncr`,
-//! spans between pairs of active edges (even–odd), and attributes `F` interpolated along the
-//! edges and then along each span with `dF`.
+//! The scanline polygon fill (Foley et al., *Computer Graphics: Principles and Practice*, 2nd ed.,
+//! 1990, §3.6) carrying attributes, as in S. Schaefer's *Shading/Texturing* lecture slides (Texas
+//! A&M University): an **Edge Table** bucketed by first scanline, an **Active Edge List** whose
+//! entries keep `maxY`, `currentX`, `xIncr`, `currentF`, `fIncr`, spans between pairs of active
+//! edges (even–odd), and attributes `F` interpolated along the edges and then along each span with
+//! `dF`.
 //!
 //! Generic over the number type ([`Scalar`]): `f64` for use, exact rationals in the tests (the
-//! seed's worked example is reproduced exactly). Two sampling rules:
+//! slides' worked example is reproduced exactly). Two sampling rules:
 //! - [`SampleRule::PixelCentres`]: samples at `(x + ½, y + ½)`, a sample on a left or top edge
 //!   is in and on a right or bottom edge out — the same coverage as the edge-function backend;
 //! - [`SampleRule::IntegerPoints`]: samples at integer `(x, y)` with the same inclusivity, the
-//!   seed's own rule in its worked example.
+//!   rule of the slides' worked example.
 
 use core::ops::{Add, Div, Mul, Sub};
 
@@ -50,7 +52,7 @@ pub enum SampleRule {
     /// Pixel centres `(x + ½, y + ½)` (GPUs, the edge-function backend).
     #[default]
     PixelCentres,
-    /// Integer points `(x, y)` (the seed's worked example).
+    /// Integer points `(x, y)` (the worked example of Schaefer's slides).
     IntegerPoints,
 }
 
@@ -65,7 +67,7 @@ pub struct ScanVertex<T, const N: usize> {
     pub f: [T; N],
 }
 
-/// An Active Edge List entry, named as in the seed.
+/// An Active Edge List entry, its fields named as in Schaefer's slides.
 #[derive(Clone, Debug)]
 struct ActiveEdge<T, const N: usize> {
     /// The edge stays active while the sample row is below this.

@@ -83,7 +83,8 @@ pub enum Interpolation {
     /// Perspective-correct (the default): the varying is affine on the triangle in 3D.
     #[default]
     Perspective,
-    /// Affine in screen space: the seed's artefact under perspective, kept for comparison.
+    /// Affine in screen space: wrong foreshortening under perspective (Buss, *3D Computer
+    /// Graphics*, 2003, Figure V.2), kept for comparison.
     Affine,
     /// Perspective-correct at the ends of `span`-pixel runs of a row (aligned to multiples of
     /// `span`), affine in between: one division per span instead of one per pixel, with an

@@ -1,7 +1,8 @@
 //! Supersampling by accumulation: the scene is drawn once per sample position, with the
 //! viewport shifted by that position's sub-pixel offset, and the passes are averaged (shading per
 //! sample: every effect is anti-aliased, not only edges). Regular N×N grids and stratified
-//! jittered positions (seed 000's supersampling, regular and stochastic).
+//! jittered positions (regular and jittered supersampling: Buss, *3D Computer Graphics*, 2003,
+//! Figure V.7; Cook 1986).
 
 use glam::{Vec2, Vec4};
 

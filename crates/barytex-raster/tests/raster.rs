@@ -271,8 +271,8 @@ fn quad_derivatives_are_close_but_less_exact_than_analytic() {
     );
 }
 
-/// Affine interpolation shows the seed's artefact: on the same plane its uv error is orders of
-/// magnitude larger.
+/// Affine interpolation shows the wrong foreshortening of Buss, *3D Computer Graphics* (2003),
+/// Figure V.2: on the same plane its uv error is orders of magnitude larger.
 #[test]
 fn affine_interpolation_is_visibly_wrong_under_perspective() {
     let (w, h) = (96_u32, 64_u32);

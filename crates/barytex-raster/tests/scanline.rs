@@ -1,5 +1,6 @@
-//! The seed's scanline backend: its worked example reproduced with exact rationals, and the
-//! same coverage as the edge-function backend on random fixed-point triangles.
+//! The scanline backend: the worked example of S. Schaefer's *Shading/Texturing* lecture slides
+//! (Texas A&M University) reproduced with exact rationals, and the same coverage as the
+//! edge-function backend on random fixed-point triangles.
 
 mod common;
 
@@ -60,10 +61,10 @@ fn q(n: i64, d: i64) -> Q {
     Q(BigRational::new(BigInt::from(n), BigInt::from(d)))
 }
 
-/// SEED-FEATURES: triangle A = (0,0), B = (1,5), C = (4,2), F = barycentric weights; the seed's
-/// rows and values, exactly.
+/// Schaefer's worked example: triangle A = (0,0), B = (1,5), C = (4,2), F = barycentric weights;
+/// the rows and values of the slides, exactly.
 #[test]
-fn seed_003_worked_example_is_reproduced_exactly() {
+fn schaefer_worked_example_is_reproduced_exactly() {
     let one = || q(1, 1);
     let zero = || Q(BigRational::zero());
     let tri = [

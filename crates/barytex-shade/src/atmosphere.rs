@@ -1,17 +1,19 @@
-//! Participating media (seed 004): the atmosphere dims distant points and shifts them towards
-//! its own colour. The final colour is `I' = s0·I + (1 − s0)·I_dc`, where `s0 ∈ [0, 1]` says how
-//! much of the object's own colour survives:
+//! Participating media (Foley et al., *Computer Graphics: Principles and Practice*, 2nd ed., 1990,
+//! §16.1, atmospheric attenuation; the Finnish lecture notes *Valaistus ja sävytys*, p. 280, for
+//! exponential and height-dependent fog): the atmosphere dims distant points and shifts them
+//! towards its own colour. The final colour is `I' = s0·I + (1 − s0)·I_dc`, where `s0 ∈ [0, 1]`
+//! says how much of the object's own colour survives:
 //!
 //! - [`DepthCue`]: linear between a front and a back plane;
-//! - [`ExponentialFog`]: `s0 = e^(−d_f·z_p)`, with `z_p` the **Euclidean** distance to the eye
-//!   (the seed's recommendation) or the view-space depth (cheaper, but it changes when the eye
+//! - [`ExponentialFog`]: `s0 = e^(−d_f·z_p)`, with `z_p` the **Euclidean** distance to the eye (the
+//!   lecture notes' recommendation) or the view-space depth (cheaper, but it changes when the eye
 //!   turns in place: [`FogDistance::ViewDepth`]);
 //! - [`HeightFog`]: density falling exponentially with height, integrated exactly along the ray.
 
 use glam::Vec3;
 
-/// `s0·colour + (1 − s0)·fog`: the seed's blend (`s0` clamped to `[0, 1]`, NaN counts as 0, i.e.
-/// the point is fully hidden).
+/// `s0·colour + (1 − s0)·fog`: the depth-cueing blend of Foley et al. (1990), §16.1 (`s0` clamped
+/// to `[0, 1]`, NaN counts as 0, i.e. the point is fully hidden).
 ///
 /// ```
 /// use barytex_shade::atmosphere::blend;
@@ -81,7 +83,8 @@ impl DepthCue {
 /// What distance exponential fog is computed from.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum FogDistance {
-    /// `|p − eye|`: unchanged when the eye turns in place (the seed's recommendation).
+    /// `|p − eye|`: unchanged when the eye turns in place (the recommendation of the Finnish
+    /// lecture notes *Valaistus ja sävytys*, p. 280).
     #[default]
     Euclidean,
     /// `(p − eye)·forward`: the view-space depth. Cheaper (it is already known), but a point's
@@ -146,9 +149,9 @@ impl ExponentialFog {
     }
 }
 
-/// Fog whose density depends on the height above the ground (seed 004's "advanced medium"):
-/// `ρ(y) = density·e^(−falloff·(y − base))`, integrated exactly along the segment from the eye
-/// to the point, `s0 = e^(−∫ρ)`.
+/// Fog whose density depends on the height above the ground (the "advanced medium model" of the
+/// Finnish lecture notes *Valaistus ja sävytys*, p. 280): `ρ(y) = density·e^(−falloff·(y − base))`,
+/// integrated exactly along the segment from the eye to the point, `s0 = e^(−∫ρ)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HeightFog {
     /// Density at height `base`, per unit of distance (≥ 0).

@@ -13,9 +13,10 @@ pub enum ViewVector {
     /// `V = (eye − p)/|eye − p|` at every point (exact).
     #[default]
     Local,
-    /// One constant unit `V` everywhere (seed 004's speed-up: "the vector from the points to the
-    /// eye can be imagined constant [0, 0, 1]"): no subtraction or normalization per point, but
-    /// highlights shift and a whole polygon can flash when its mirror direction meets `V`.
+    /// One constant unit `V` everywhere (a speed-up of the Finnish lecture notes *Valaistus ja
+    /// sävytys*, p. 292: "the vector from the points to the eye can be imagined constant [0, 0,
+    /// 1]"): no subtraction or normalization per point, but highlights shift and a whole polygon
+    /// can flash when its mirror direction meets `V`.
     Constant(Vec3),
 }
 

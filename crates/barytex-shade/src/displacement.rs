@@ -1,6 +1,7 @@
-//! Displacement mapping (seed 003): the geometry itself moves along the normal by a height
-//! texture, so — unlike bump and normal mapping — the silhouette changes. The mesh is first
-//! tessellated finely enough for the height's detail, then every vertex is offset.
+//! Displacement mapping (Cook 1984; S. Schaefer's *Shading/Texturing* slides): the geometry itself
+//! moves along the normal by a height texture, so — unlike bump and normal mapping — the silhouette
+//! changes. The mesh is first tessellated finely enough for the height's detail, then every vertex
+//! is offset.
 //!
 //! Chart seams break naive displacement: the copies of a seam vertex (same position, different
 //! uv, e.g. `u = 0` and `u = 1` on a sphere) read different heights and pull apart, opening a
@@ -19,7 +20,8 @@ use crate::{NormalWeighting, vertex_normals};
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Seams {
     /// Displace every vertex by its own height: cracks open wherever the height differs across a
-    /// seam (the seed's warning).
+    /// seam (the warning of Schaefer's slides: chart boundaries that don't match are "a huge
+    /// problem for displacement mapping").
     Ignore,
     /// Displace all copies of a position (bit-identical before displacement) by their mean offset,
     /// and give them their mean normal afterwards: no cracks. The default.

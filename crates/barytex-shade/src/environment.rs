@@ -1,5 +1,6 @@
-//! Environment mapping (seeds 000, 003): the reflected ray `r = 2(n·v)n − v` looks up a cube map
-//! (faces assumed infinitely far), an OpenGL sphere map or an equirectangular panorama.
+//! Environment mapping (Blinn and Newell 1976; Greene 1986; Buss, *3D Computer Graphics*, 2003,
+//! §V.3; S. Schaefer's *Shading/Texturing* slides): the reflected ray `r = 2(n·v)n − v` looks up a
+//! cube map (faces assumed infinitely far), an OpenGL sphere map or an equirectangular panorama.
 
 use barytex_texture::{CubeTexture, Sampler, Texel};
 use barytex_uv::environment::{EnvironmentMap, EnvironmentMapping, Lookup};

@@ -1,4 +1,6 @@
-//! Shading frequencies as [`Shader`]s (seeds 003, 004): how often the illumination model runs.
+//! Shading frequencies as [`Shader`]s (Foley et al., *Computer Graphics: Principles and
+//! Practice*, 2nd ed., 1990, §16.2; Gouraud 1971; Phong 1975): how often the illumination model
+//! runs.
 //!
 //! | shader | lighting runs | interpolated |
 //! |---|---|---|
@@ -46,9 +48,10 @@ impl Shader for ColouredShader<'_> {
     }
 }
 
-/// Flat shading: every triangle lit once, at its centroid with its face normal (the seed's "one
-/// colour per polygon, usually at its centre"); the triangles are unwelded so that each carries
-/// its own colour. Degenerate triangles and those with an index out of range are left out.
+/// Flat shading: every triangle lit once, at its centroid with its face normal (S. Schaefer's
+/// *Shading/Texturing* slides: "apply same color across entire polygon … typically use center of
+/// polygon"); the triangles are unwelded so that each carries its own colour. Degenerate triangles
+/// and those with an index out of range are left out.
 ///
 /// ```
 /// use barytex_shade::{flat_vertices, Camera, Light, PhongMaterial, ShadeContext, ViewVector};
@@ -110,10 +113,10 @@ impl Shader for GouraudShader<'_> {
 pub struct PhongShader<'a> {
     /// Camera, lights, material.
     pub scene: &'a ShadeContext,
-    /// Whether to renormalize the interpolated normal (seed 003). `false` is the "pre-normalized
-    /// normals" shortcut taken too far: interpolated unit normals are shorter than 1 inside a
-    /// triangle, which darkens the diffuse term and blunts the highlight (measured in
-    /// `tests/speedups.rs`).
+    /// Whether to renormalize the interpolated normal (Phong 1975; Schaefer's slides: "must
+    /// renormalize"). `false` is the "pre-normalized normals" shortcut taken too far: interpolated
+    /// unit normals are shorter than 1 inside a triangle, which darkens the diffuse term and blunts
+    /// the highlight (measured in `tests/speedups.rs`).
     pub renormalize: bool,
 }
 

@@ -1,4 +1,5 @@
-//! Combined Gouraud and Phong shading (seed 004): most polygons of a curved object show no
+//! Combined Gouraud and Phong shading (the Finnish lecture notes *Valaistus ja sävytys*, p. 290;
+//! see the crate's [References](crate#references)): most polygons of a curved object show no
 //! highlight, so Phong shading them all is wasted work. Every triangle is Gouraud shaded (which
 //! keeps the edges between neighbours smooth), and only the triangles that pass a **highlight
 //! test** (H-test) are shaded per pixel. The test has to look not only at the vertices but also

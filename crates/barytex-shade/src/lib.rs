@@ -1,4 +1,5 @@
-//! Shading, lighting and texturing techniques of the seed lectures, as pure functions and as
+//! Shading, lighting and texturing techniques of the classic local illumination and shading
+//! literature (see [References](#references)), as pure functions and as
 //! [`barytex_raster::Shader`]s.
 //!
 //! | concept | items |
@@ -8,7 +9,7 @@
 //! | camera and scene | [`Camera`] ([`camera::look_at`], [`camera::perspective`]), [`ShadeContext`], [`ViewVector`], [`ShadeVertex`], [`mesh_vertices`] |
 //! | normals | [`face_normal`], [`vertex_normals`] ([`NormalWeighting`]: uniform, area, angle) |
 //! | shading frequencies | flat ([`flat_vertices`] + [`ColouredShader`]), [`GouraudShader`], [`PhongShader`] (or [`SlerpPhongShader`]), Gouraud + Phong with the H-test ([`HighlightTest`], [`hybrid_vertices`], [`HybridShader`]), the exact-normal [`ReferenceShader`] |
-//! | speed-ups (seed 004) | [`ViewVector::Constant`], [`PhongShader`] without renormalization, [`precomputed_vertex_colours`], fast approximate Phong ([`fast_phong_vertices`], [`FastPhongShader`], [`quadratic_interpolate`]) |
+//! | speed-ups | [`ViewVector::Constant`], [`PhongShader`] without renormalization, [`precomputed_vertex_colours`], fast approximate Phong ([`fast_phong_vertices`], [`FastPhongShader`], [`quadratic_interpolate`]) |
 //! | texturing | [`SurfaceShader`] with [`TextureUse`] (replace, modulate, diffuse/specular/shininess input) |
 //! | normal perturbation | [`decode_normal`], [`perturb_normal`] (normal maps), [`generate_tangents`] (MikkTSpace), [`bump_normal`] and [`HeightField`] (bump maps) |
 //! | environment maps | [`Environment`] (cube, sphere map, equirect), [`DirectionSampler`], [`reflection_direction`] |
@@ -20,6 +21,43 @@
 //! eye) are unit vectors pointing away from the surface; everything in one space of the
 //! caller's choice (world space in the shaders). Nothing panics on NaN, infinite or zero-length
 //! input: each function documents the value it returns instead, and no term is ever negative.
+//!
+//! # References
+//! - J. D. Foley, A. van Dam, S. K. Feiner, J. F. Hughes, *Computer Graphics: Principles and
+//!   Practice*, 2nd ed., Addison-Wesley, 1990, ch. 16 "Illumination and Shading": §16.1, the
+//!   illumination models (emission `I = k_i`, ambient `I = I_a k_a`, Lambert's `I = I_p k_d
+//!   (N·L)`, the attenuation `f_att = min(1/(c1 + c2 d + c3 d²), 1)`, depth cueing
+//!   `I' = s0 I + (1 − s0) I_dc`, Phong's `I = I_p W(θ) (cos α)^n`, Warn's spotlight); §16.2,
+//!   flat, Gouraud and Phong shading and the problems of interpolated shading.
+//! - *Octreen piirtäminen. Huomioita portaalitekniikasta. Octree edestä taakse. Valaistus ja
+//!   sävytys*, Finnish computer graphics lecture notes, pp. 272–295: octree drawing back to front
+//!   and front to back, exponential and height-dependent fog, combined Gouraud and Phong shading
+//!   with the five-stage highlight test (H-test), and the shading speed-ups.
+//! - H. Gouraud, "Continuous shading of curved surfaces", *IEEE Transactions on Computers*
+//!   C-20(6), 1971.
+//! - B. T. Phong, "Illumination for computer generated pictures", *Communications of the ACM*
+//!   18(6), 1975.
+//! - J. F. Blinn, "Models of light reflection for computer synthesized pictures", *SIGGRAPH '77*
+//!   (the half vector); "Simulation of wrinkled surfaces", *SIGGRAPH '78* (bump mapping).
+//! - D. R. Warn, "Lighting controls for synthetic images", *SIGGRAPH '83*.
+//! - G. Bishop, D. M. Weimer, "Fast Phong shading", *SIGGRAPH '86*.
+//! - R. L. Cook, "Shade trees", *SIGGRAPH '84* (displacement mapping).
+//! - J. F. Blinn, M. E. Newell, "Texture and reflection in computer generated images",
+//!   *Communications of the ACM* 19(10), 1976; N. Greene, "Environment mapping and other
+//!   applications of world projections", *IEEE Computer Graphics and Applications* 6(11), 1986.
+//! - S. R. Buss, *3D Computer Graphics: A Mathematical Introduction with OpenGL*, Cambridge
+//!   University Press, 2003, ch. V: the uses of a texture (replace the colour, modulate it after
+//!   lighting, or feed the lighting), bump mapping (Figure V.8: needs Phong shading, not
+//!   Gouraud), environment mapping.
+//! - S. Schaefer, *Shading/Texturing*, lecture slides, Texas A&M University: the vertex normal
+//!   `N_V = ΣN_k / |ΣN_k|`, renormalized normal interpolation, the reflected ray
+//!   `r = 2(n·v)n − v` into a cube map whose faces are infinitely far, normal maps storing XYZ
+//!   as RGB, displacement mapping and the cracks at chart seams.
+//! - L. Yan, *GAMES101: Introduction to Modern Computer Graphics*, Lecture 9 "Shading 3 (Texture
+//!   Mapping cont.)", 2020: the diffuse texture shader
+//!   `kd = texture(uv); kd *= clamp(dot(−lightDir, n), 0, 1)`.
+//! - L. J. Doctor, J. G. Torborg, "Display techniques for octree-encoded objects", *IEEE Computer
+//!   Graphics and Applications* 1(3), 1981 (back-to-front octree traversal).
 //!
 //! ```
 //! use barytex_shade::{Attenuation, Light, PhongMaterial};

@@ -9,9 +9,10 @@ use crate::Attenuation;
 /// How a spot light's intensity falls off away from its axis.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum SpotShape {
-    /// Warn's model (seed 004): `I_p (cos α)^p`, α the angle between the spot axis and the ray
-    /// from the light to the point; `p` is the reflector's specular exponent — the smaller, the
-    /// wider the light spreads (`p = 0`: an ordinary point light over the front hemisphere).
+    /// Warn's model (Warn 1983; Foley et al. 1990, §16.1): `I_p (cos α)^p`, α the angle between the
+    /// spot axis and the ray from the light to the point; `p` is the reflector's specular exponent
+    /// — the smaller, the wider the light spreads (`p = 0`: an ordinary point light over the front
+    /// hemisphere).
     Warn {
         /// `p ≥ 0` (negative values count as 0).
         exponent: f32,

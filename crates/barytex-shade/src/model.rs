@@ -1,4 +1,5 @@
-//! The seed's local illumination models as pure functions (seed 004, seed 001): emission
+//! The local illumination models of Foley et al., *Computer Graphics: Principles and Practice*,
+//! 2nd ed., 1990, §16.1, and Blinn–Phong (Blinn 1977), as pure functions: emission
 //! `I = k_i`, ambient `I = I_a k_a`, Lambert's diffuse `I = I_p k_d (N·L)`, Phong's specular
 //! `I = I_p W(θ) (cos α)^n` with `W(θ) = k_s`, and Blinn's half-vector variant — and a
 //! [`PhongMaterial`] that sums them over lights. Usable by the rasterizer's shaders and by a ray
@@ -104,7 +105,7 @@ pub(crate) fn power(c: f32, shininess: f32) -> f32 {
 /// Which specular lobe a [`PhongMaterial`] uses.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Specular {
-    /// Phong's `(R·V)^n` (the seed's model).
+    /// Phong's `(R·V)^n` (Phong 1975; Foley et al. 1990, §16.1).
     #[default]
     Phong,
     /// Blinn's `(N·H)^n`.

@@ -1,14 +1,15 @@
-//! Face normals and vertex normals for Gouraud and Phong shading (seeds 003, 004): the vertex
-//! normal is the normalized sum of the normals of the faces that share the vertex,
-//! `N_V = ΣN_k / |ΣN_k|`, optionally weighted by face area or by the angle at the vertex.
+//! Face normals and vertex normals for Gouraud and Phong shading (Gouraud 1971; Foley et al. 1990,
+//! §16.2; S. Schaefer's *Shading/Texturing* slides): the vertex normal is the normalized sum of the
+//! normals of the faces that share the vertex, `N_V = ΣN_k / |ΣN_k|`, optionally weighted by face
+//! area or by the angle at the vertex.
 
 use glam::Vec3;
 
 /// How the faces around a vertex are weighted in [`vertex_normals`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum NormalWeighting {
-    /// The seed's plain average of unit face normals: every face counts the same, so a mesh
-    /// that is finely split on one side of a vertex leans towards that side.
+    /// The plain average of unit face normals (Schaefer's `N_V = ΣN_k / |ΣN_k|`): every face counts
+    /// the same, so a mesh that is finely split on one side of a vertex leans towards that side.
     Uniform,
     /// Weighted by face area (the unnormalized cross products summed): large faces dominate.
     Area,
@@ -36,10 +37,10 @@ pub fn face_normal(a: Vec3, b: Vec3, c: Vec3) -> Option<Vec3> {
 /// the normals of the triangles using it.
 ///
 /// # Special values
-/// A vertex used by no valid triangle, or whose face normals cancel (e.g. the apex of a
-/// corrugated fan — the seed's warning that averaged normals can mislead), gets the zero vector,
-/// which lights as ambient only. Triangles with an out-of-range index, a degenerate shape or a
-/// non-finite position are skipped.
+/// A vertex used by no valid triangle, or whose face normals cancel (e.g. the apex of a corrugated
+/// fan — the warning of Foley et al. 1990, §16.2, that averaged normals can mislead), gets the zero
+/// vector, which lights as ambient only. Triangles with an out-of-range index, a degenerate shape
+/// or a non-finite position are skipped.
 ///
 /// ```
 /// use barytex_shade::{vertex_normals, NormalWeighting};

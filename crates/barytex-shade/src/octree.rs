@@ -1,4 +1,5 @@
-//! Octree rendering (seed 004). An octree of coloured voxels can be drawn
+//! Octree rendering (Doctor and Torborg 1981; the Finnish lecture notes *Octreen piirtäminen*
+//! and *Octree edestä taakse*, pp. 273–274). An octree of coloured voxels can be drawn
 //!
 //! - **back to front without any depth comparison**: at every node the child farthest from the
 //!   eye first, then its three neighbours, then the next three, the nearest last — a valid

@@ -1,4 +1,5 @@
-//! Normal perturbation before lighting (seeds 000, 003): normal maps (tangent-space XYZ stored
+//! Normal perturbation before lighting (Blinn 1978; Buss, *3D Computer Graphics*, 2003, §V.2;
+//! S. Schaefer's *Shading/Texturing* slides): normal maps (tangent-space XYZ stored
 //! as RGB) and bump maps (a height field whose slope tilts the normal). Both need the normal per
 //! pixel — Phong shading, not Gouraud.
 

@@ -1,5 +1,6 @@
-//! Seed 004's shading speed-ups, each with its error measured in `tests/speedups.rs` and in the
-//! report:
+//! The shading speed-ups of the Finnish lecture notes *Valaistus ja sävytys* (p. 292; see the
+//! crate's [References](crate#references)), each with its error measured in `tests/speedups.rs` and
+//! in the report:
 //!
 //! - a constant view vector ([`ViewVector::Constant`](crate::ViewVector::Constant));
 //! - pre-normalized normals (normalize once when the mesh is built; [`PhongShader`](crate::PhongShader)'s

@@ -1,8 +1,8 @@
-//! Textures in the shading (seeds 000, 001): a colour texture can **replace** the colour,
-//! **modulate** the lit colour afterwards, or be an **input to lighting** (diffuse or specular
-//! reflectance, shininess); a normal map or a bump map perturbs the normal before lighting; an
-//! environment map adds the mirrored surroundings. [`SurfaceShader`] does all of these per pixel
-//! (Phong shading), each optional.
+//! Textures in the shading (Buss, *3D Computer Graphics*, 2003, ch. V; L. Yan, GAMES101,
+//! Lecture 9): a colour texture can **replace** the colour, **modulate** the lit colour afterwards,
+//! or be an **input to lighting** (diffuse or specular reflectance, shininess); a normal map or a
+//! bump map perturbs the normal before lighting; an environment map adds the mirrored surroundings.
+//! [`SurfaceShader`] does all of these per pixel (Phong shading), each optional.
 
 use barytex_raster::{Fragment, Shader};
 use barytex_texture::Sampler;
@@ -19,8 +19,9 @@ pub enum TextureUse {
     Replace,
     /// The lit colour is multiplied by the texture afterwards (modulation after lighting).
     Modulate,
-    /// The texture is `k_d` (and `k_a`): seed 001's `kd = texture(uv); kd *= clamp(N·L, 0, 1)`.
-    /// Highlights stay the light's colour, unlike [`Modulate`](Self::Modulate). The default.
+    /// The texture is `k_d` (and `k_a`): the diffuse shader of L. Yan's GAMES101, Lecture 9,
+    /// `kd = texture(uv); kd *= clamp(N·L, 0, 1)`. Highlights stay the light's colour, unlike
+    /// [`Modulate`](Self::Modulate). The default.
     #[default]
     Diffuse,
     /// The texture is `k_s` (a specular or gloss map).

@@ -162,8 +162,9 @@ fn angle_weighting_ignores_how_a_face_is_split() {
 
 #[test]
 fn averaged_normals_can_all_be_parallel() {
-    // The seed's warning: a corrugated strip whose face normals alternate ±30° about +y gives
-    // every vertex the normal +y, so Gouraud shades the whole strip one colour.
+    // Foley et al., *Computer Graphics: Principles and Practice* (2nd ed., 1990), §16.2, on
+    // unrepresentative vertex normals: a corrugated strip whose face normals alternate ±30° about
+    // +y gives every vertex the normal +y, so Gouraud shades the whole strip one colour.
     let mut p = Vec::new();
     for i in 0..7 {
         let y = if i % 2 == 0 { 0.0 } else { 0.577 };
@@ -229,7 +230,8 @@ fn slerp_triangle_normal_corners_and_edges() {
     );
 }
 
-/// The seed: "the result depends on the polygon's orientation if the polygons are not
+/// The Finnish lecture notes *Valaistus ja sävytys*, p. 291 (orientation dependence; Foley et al.
+/// 1990, §16.2): "the result depends on the polygon's orientation if the polygons are not
 /// triangles" — a quad split along one diagonal or the other interpolates different colours.
 #[test]
 fn quads_shade_differently_when_split_along_the_other_diagonal() {
@@ -348,8 +350,9 @@ fn h_test_stages() {
     assert_eq!(test.run(&matte, p, facing), HighlightVerdict::NoSpecular);
 }
 
-/// The seed: "interpolated shading does nothing for the polygonal silhouette" — Gouraud and Phong
-/// cover exactly the same pixels, and both miss pixels the true sphere covers.
+/// The Finnish lecture notes *Valaistus ja sävytys*, p. 291 (polygonal silhouettes; Foley et al.
+/// 1990, §16.2): "interpolated shading does nothing for the polygonal silhouette" — Gouraud and
+/// Phong cover exactly the same pixels, and both miss pixels the true sphere covers.
 #[test]
 fn silhouettes_stay_polygonal() {
     let scene = scene();

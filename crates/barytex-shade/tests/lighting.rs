@@ -314,9 +314,10 @@ fn depth_cue_planes() {
     assert_eq!(blend(Vec3::ONE, Vec3::ZERO, f32::NAN), Vec3::ZERO);
 }
 
-/// The seed: view-space z as the fog distance "works wrongly when the eye is rotated in place".
-/// A point 10 units away stays 10 units away while the eye turns, so Euclidean fog does not
-/// change; the z variant thins the fog as the point moves to the edge of the view.
+/// Finnish lecture notes *Valaistus ja sävytys*, p. 280: view-space z as the fog distance "works
+/// wrongly when the eye is rotated in place". A point 10 units away stays 10 units away while the
+/// eye turns, so Euclidean fog does not change; the z variant thins the fog as the point moves to
+/// the edge of the view.
 #[test]
 fn view_depth_fog_changes_when_the_eye_rotates() {
     let p = Vec3::new(0.0, 0.0, -10.0);

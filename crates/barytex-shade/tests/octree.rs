@@ -1,5 +1,6 @@
-//! Octree rendering: the seed's back-to-front child order needs no depth test; front to back
-//! with a coverage quadtree skips hidden subtrees; both match a depth-tested rendering.
+//! Octree rendering: the back-to-front child order (Doctor and Torborg 1981; the Finnish lecture
+//! notes *Octreen piirtäminen*, p. 273) needs no depth test; front to back with a coverage quadtree
+//! skips hidden subtrees; both match a depth-tested rendering.
 
 use barytex_raster::Framebuffer;
 use barytex_raster::TargetLimits;

@@ -1,5 +1,5 @@
-//! Seed 004's speed-ups, each with its error measured against exact Phong shading on the test
-//! sphere (128², one directional light).
+//! The shading speed-ups of the Finnish lecture notes *Valaistus ja sävytys* (p. 292), each with
+//! its error measured against exact Phong shading on the test sphere (128², one directional light).
 
 mod common;
 
@@ -21,7 +21,7 @@ fn constant_view_vector_error() {
     let (v, i) = mesh_vertices(&mesh);
     let exact = render(&PhongShader::new(&scene), &v, &i);
     let mut fast = scene.clone();
-    // The seed's [0, 0, 1]: here the camera looks down −z, so V = +z.
+    // The lecture notes' constant V = [0, 0, 1]: here the camera looks down −z, so V = +z.
     fast.view = ViewVector::Constant(Vec3::Z);
     let approx = render(&PhongShader::new(&fast), &v, &i);
     let e = error(&approx, &exact);

@@ -286,8 +286,11 @@ mod tests {
     #![allow(clippy::unwrap_used)]
     use super::*;
 
+    /// Example 9 of A. Denisjuk's lecture *Interpolacja i teksturowanie* (the points of
+    /// Exercise IV.5 in Buss, *3D Computer Graphics*, 2003): u = (1, 0) in x = (0, 0),
+    /// y = (2, 3), z = (3, 1) has the weights (5/7, −1/7, 3/7).
     #[test]
-    fn seed_example_9_exact() {
+    fn example_9_exact() {
         let tri = [Vec2::ZERO, Vec2::new(2.0, 3.0), Vec2::new(3.0, 1.0)];
         let w = barycentric_2d(Vec2::new(1.0, 0.0), tri).unwrap();
         let expect = [(5, 7), (-1, 7), (3, 7)];

@@ -22,7 +22,7 @@ pub fn barycentric_condition(p: Vec2, [a, b, c]: [Vec2; 3]) -> f64 {
     magnitude * edge / area2
 }
 
-/// The accuracy bar of REFERENCES.md for one 2D barycentric weight:
+/// The project's accuracy bar for one 2D barycentric weight (`docs/ACCURACY.md`):
 /// `4 ulp + 2⁻²⁴·κ` around the exact value.
 #[must_use]
 pub fn barycentric_bar(exact_weight: f64, kappa: f64) -> f64 {
@@ -60,7 +60,7 @@ pub fn check_orient2d(a: Vec2, b: Vec2, c: Vec2) -> Result<(), String> {
 
 /// `barycentric_2d` and `locate_2d`: errors for non-finite and degenerate input, exact location,
 /// zero weights exactly zero on edges and vertices, each weight within the documented bound
-/// (1 ulp) and the bar of REFERENCES.md.
+/// (1 ulp) and the project's accuracy bar ([`barycentric_bar`]).
 ///
 /// # Errors
 /// A description of the violated invariant.

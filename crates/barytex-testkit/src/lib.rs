@@ -32,8 +32,9 @@ pub mod strategies;
 pub mod ulp;
 pub mod uv;
 
-/// Where the shared fixtures live: `$BARYTEX_FIXTURES`, else `../shared/fixtures` relative to the
-/// workspace root. `None` when absent (tests then skip with a printed note).
+/// Where the test fixtures live (the Khronos glTF 2.0 sample models and the glTF-Validator test
+/// assets, kept outside the repository): `$BARYTEX_FIXTURES`, else `../shared/fixtures` relative
+/// to the workspace root. `None` when absent (tests then skip with a printed note).
 #[must_use]
 pub fn fixtures_dir() -> Option<std::path::PathBuf> {
     let dir = std::env::var_os("BARYTEX_FIXTURES")

@@ -154,7 +154,9 @@ pub fn near_parallelogram_quad() -> impl Strategy<Value = [Vec2; 4]> + Clone {
         })
 }
 
-/// Four non-coplanar points in `[-10, 10]³` (the seed's Corollary 12 case).
+/// Four non-coplanar points in `[-10, 10]³`: the case of Corollary 12 of A. Denisjuk's lecture
+/// *Interpolacja i teksturowanie* (after Buss, *3D Computer Graphics*, 2003, Theorem IV.6):
+/// bilinear interpolation of non-coplanar corners is one-to-one.
 pub fn non_planar_quad_3d() -> impl Strategy<Value = [Vec3; 4]> + Clone {
     [
         vec3_in(-10.0, 10.0),

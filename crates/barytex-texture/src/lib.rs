@@ -23,6 +23,24 @@
 //! to and from [`Texel`] are **linear light, straight (not premultiplied) alpha**; filters work on
 //! premultiplied linear values internally.
 //!
+//! # References
+//! - L. Yan, *GAMES101: Introduction to Modern Computer Graphics*, Lecture 9 "Shading 3 (Texture
+//!   Mapping cont.)", 2020: nearest, bilinear (two horizontal lerps, then one vertical) and
+//!   bicubic magnification; a 512× supersampled image as the reference for minification; the
+//!   footprint `L = max(√((du/dx)² + (dv/dx)²), √((du/dy)² + (dv/dy)²))`, `D = log₂ L`;
+//!   trilinear filtering; anisotropic filtering and EWA.
+//! - L. Williams, "Pyramidal parametrics", *SIGGRAPH '83* (mip maps).
+//! - N. Greene, P. S. Heckbert, "Creating raster Omnimax images from multiple perspective views
+//!   using the elliptical weighted average filter", *IEEE Computer Graphics and Applications*
+//!   6(6), 1986; P. S. Heckbert, *Fundamentals of Texture Mapping and Image Warping*, M.S.
+//!   thesis, UC Berkeley, 1989 (EWA).
+//! - The Khronos Group, *Vulkan 1.3 Specification*, ch. "Image Operations": "Texel Coordinate
+//!   Systems", "Scale Factor Operation, Level-of-Detail Operation and Image Level(s) Selection",
+//!   "Texel Filtering"; *OpenGL 4.6 Core Profile*, §8.14 "Texture Minification" and §8.15
+//!   "Texture Magnification" (separate minification and magnification filters).
+//! - D. R. Peachey, "Solid texturing of complex surfaces", and K. Perlin, "An image
+//!   synthesizer", both *SIGGRAPH '85* (procedural textures).
+//!
 //! ```
 //! use barytex_texture::{Srgba8, Texel, Texture2d};
 //!

@@ -1,4 +1,4 @@
-//! Procedural textures: computed on the fly from the coordinate (seed 000's "procedural image"),
+//! Procedural textures: computed on the fly from the coordinate (Peachey 1985, Perlin 1985),
 //! implementing the same [`Sampler`](crate::Sampler) as image textures so filters can be compared
 //! on them — and one, [`BoxFilteredCheckerboard`], filtered analytically: exact ground truth.
 

@@ -1,5 +1,5 @@
-//! The supersampled reference sampler (seed 001's "512× supersampling" as ground truth): N×N
-//! stratified jittered point samples over the pixel footprint.
+//! The supersampled reference sampler (the "512× supersampling" reference of L. Yan's GAMES101,
+//! Lecture 9, as ground truth): N×N stratified jittered point samples over the pixel footprint.
 
 use glam::{Vec2, Vec4};
 

@@ -17,6 +17,18 @@
 //! angles in radians; right-handed, y-up object space. Nothing panics on NaN, infinite or
 //! degenerate input: mappings return `None`, constructors a [`UvError`].
 //!
+//! # References
+//! - S. R. Buss, *3D Computer Graphics: A Mathematical Introduction with OpenGL*, Cambridge
+//!   University Press, 2003, ch. V "Texture Mapping": the cylinder, the sphere's two projections
+//!   (eqs. (V.2) and (V.3), Figure V.5) and the torus (Figure V.6); the seam of Figure V.4;
+//!   sphere and box environment maps (Figures V.10, V.11).
+//! - J. F. Blinn, M. E. Newell, "Texture and reflection in computer generated images",
+//!   *Communications of the ACM* 19(10), 1976 (environment mapping by the reflected ray).
+//! - N. Greene, "Environment mapping and other applications of world projections", *IEEE
+//!   Computer Graphics and Applications* 6(11), 1986 (cube maps).
+//! - Z. H. Cigolle et al., "A survey of efficient representations for independent unit
+//!   vectors", *Journal of Computer Graphics Techniques* 3(2), 2014 (octahedral maps).
+//!
 //! ```
 //! use barytex_uv::{PositionMapping, SurfacePoint, UvJacobian, UvMapping};
 //! use glam::{Vec2, Vec3};

@@ -1,5 +1,6 @@
-//! Seam repair: per-triangle texture coordinates that do not straddle the `u` wrap of a
-//! periodic mapping (the seed's Figure V.4), and pole handling for sphere triangles.
+//! Seam repair: per-triangle texture coordinates that do not straddle the `u` wrap of a periodic
+//! mapping (Figure V.4 of Buss, *3D Computer Graphics*, 2003), and pole handling for sphere
+//! triangles.
 //!
 //! A periodic mapping ([`Cylindrical`](crate::mappings::Cylindrical),
 //! [`Spherical`](crate::mappings::Spherical), [`Torus`](crate::mappings::Torus)) gives `u` in
@@ -60,7 +61,7 @@ fn unwrap_u(us: &mut [f32]) {
 /// use barytex_uv::seam::repair_seam;
 /// use glam::Vec2;
 ///
-/// // The seed's Figure V.4: a patch whose s runs 0.9 → 0.1 must run 0.9 → 1.1.
+/// // Buss (2003), Figure V.4: a patch whose s runs 0.9 → 0.1 must run 0.9 → 1.1.
 /// let fixed = repair_seam([Vec2::new(0.9, 0.2), Vec2::new(0.1, 0.2), Vec2::new(0.9, 0.4)]);
 /// assert_eq!(fixed, [Vec2::new(0.9, 0.2), Vec2::new(1.1, 0.2), Vec2::new(0.9, 0.4)]);
 /// ```

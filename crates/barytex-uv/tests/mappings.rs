@@ -439,13 +439,14 @@ fn poles_and_axes_are_none_only_on_the_axis() {
 }
 
 #[test]
-fn projections_match_the_seed_formulas() {
+fn projections_match_buss_equations_v2_and_v3() {
     let equirect = sphere(SphereProjection::Equirectangular);
     let equal_area = sphere(SphereProjection::EqualArea);
     for lat_deg in [-80.0f32, -45.0, -10.0, 0.0, 30.0, 60.0, 89.0] {
         let phi = lat_deg.to_radians();
         let p = Vec3::new(phi.cos() * 0.6, phi.sin(), phi.cos() * 0.8) * 2.0;
-        // t = φ/180 + 1/2 in degrees and t = sin φ/2 + 1/2; v = 1 − t.
+        // Buss (2003), eqs. (V.2) and (V.3): t = φ/180 + 1/2 in degrees and t = sin φ/2 + 1/2;
+        // v = 1 − t.
         let v1 = equirect.uv(p, p).expect("regular").y;
         let v2 = equal_area.uv(p, p).expect("regular").y;
         assert!(

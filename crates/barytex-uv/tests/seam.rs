@@ -1,6 +1,6 @@
-//! Seam repair: the seed's Figure V.4, the half-texture property (a triangle that fits in half a
-//! turn never spans more than half the texture after repair), whole-turn shifts only, and pole
-//! handling on the sphere.
+//! Seam repair: Figure V.4 of Buss, *3D Computer Graphics* (2003), the half-texture property (a
+//! triangle that fits in half a turn never spans more than half the texture after repair),
+//! whole-turn shifts only, and pole handling on the sphere.
 
 use barytex_testkit::strategies::bits_f32;
 use barytex_uv::PositionMapping;
@@ -15,10 +15,10 @@ fn u_span(t: [Vec2; 3]) -> f32 {
         - us.iter().copied().fold(f32::INFINITY, f32::min)
 }
 
-/// Figure V.4: a quad whose `s` runs 0.9 → 0.1 across the seam; both of its triangles must run
-/// 0.9 → 1.1, not back across the texture.
+/// Buss (2003), Figure V.4: a quad whose `s` runs 0.9 → 0.1 across the seam; both of its triangles
+/// must run 0.9 → 1.1, not back across the texture.
 #[test]
-fn seed_figure_v4() {
+fn buss_figure_v4() {
     let (a, b, c, d) = (
         Vec2::new(0.9, 0.3),
         Vec2::new(0.1, 0.3),

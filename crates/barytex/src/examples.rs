@@ -1,6 +1,8 @@
-//! `barytex examples`: the worked examples of barycentric interpolation
-//! run through `barytex-interp`, each checked against exact rational arithmetic, and a summary
-//! of Kettner's orientation grid. Every number is computed at run time.
+//! `barytex examples`: the worked examples of S. R. Buss, *3D Computer Graphics: A
+//! Mathematical Introduction with OpenGL* (2003), ch. IV, numbered as in A. Denisjuk's lecture
+//! *Interpolacja i teksturowanie* (University of Warmia and Mazury), run through
+//! `barytex-interp`, each checked against exact rational arithmetic, and a summary of Kettner's
+//! orientation grid. Every number is computed at run time.
 
 use std::io::Write;
 
@@ -65,9 +67,10 @@ pub(crate) fn run() -> Result {
     )?;
     writeln!(
         out,
-        "The renderer does not exist yet; this demo runs the seed's worked examples through \
-         barytex-interp\nand checks every result against exact rational arithmetic \
-         (barytex_testkit::exact), computed now.\n"
+        "The renderer does not exist yet; this demo runs the worked examples of S. R. Buss, 3D \
+         Computer Graphics (2003), ch. IV,\nnumbered as in A. Denisjuk's lecture notes \
+         \"Interpolacja i teksturowanie\", through barytex-interp\nand checks every result \
+         against exact rational arithmetic (barytex_testkit::exact), computed now.\n"
     )?;
     barycentric_examples(&mut out)?;
     bilinear_examples(&mut out)?;
@@ -93,23 +96,23 @@ fn barycentric_examples(out: &mut impl Write) -> Result {
     let points = [(2, 1, 3, 1), (11, 3, 2, 1), (3, 2, 3, 2), (1, 1, 0, 1)];
     writeln!(
         out,
-        "Seed 000, Examples 7 and 9: barycentric coordinates (α, β, γ) in the triangle \
-         x = (0, 0), y = (2, 3), z = (3, 1)"
+        "Examples 7 and 9 (Buss, Exercise IV.5): barycentric coordinates (α, β, γ) in the \
+         triangle x = (0, 0), y = (2, 3), z = (3, 1)"
     )?;
     writeln!(
         out,
         "with barytex_interp::barycentric_2d. The point is rounded to f32 first (11/3 is not an \
          f32), so the error is measured\nagainst the exact weights of the f32 point, and, \
-         separately, against the seed's answer for the ideal point."
+         separately, against the exact answer for the ideal point."
     )?;
     let h = [
         "point",
-        "seed's answer",
+        "ideal answer",
         "barycentric_2d (f32)",
         "location",
         "error",
         "ulps",
-        "vs seed",
+        "vs ideal",
     ];
     writeln!(
         out,
@@ -119,7 +122,7 @@ fn barycentric_examples(out: &mut impl Write) -> Result {
     let total = cross(&tri_q[0], &tri_q[1], &tri_q[2]);
     for (xn, xd, yn, yd) in points {
         let ideal = [rat(xn, xd), rat(yn, yd)];
-        let seed_weights = [
+        let ideal_weights = [
             cross(&tri_q[1], &tri_q[2], &ideal) / &total,
             cross(&tri_q[2], &tri_q[0], &ideal) / &total,
             cross(&tri_q[0], &tri_q[1], &ideal) / &total,
@@ -127,12 +130,12 @@ fn barycentric_examples(out: &mut impl Write) -> Result {
         let p = Vec2::new(to_f32(&ideal[0]), to_f32(&ideal[1]));
         let b = barycentric_2d(p, tri)?;
         let exact_w = exact::barycentric_2d(p, tri).ok_or("degenerate example triangle")?;
-        let (mut err, mut ulps, mut vs_seed) = (0.0f64, 0.0f64, 0.0f64);
-        for ((&w, e), s) in b.weights.iter().zip(&exact_w).zip(&seed_weights) {
+        let (mut err, mut ulps, mut vs_ideal) = (0.0f64, 0.0f64, 0.0f64);
+        for ((&w, e), s) in b.weights.iter().zip(&exact_w).zip(&ideal_weights) {
             let d = exact::abs_diff(&exact::qf(w), e);
             err = err.max(d);
             ulps = ulps.max(d / ulp_f32(exact::to_f64(e)));
-            vs_seed = vs_seed.max(exact::abs_diff(&exact::qf(w), s));
+            vs_ideal = vs_ideal.max(exact::abs_diff(&exact::qf(w), s));
         }
         let exact_location = exact::location_2d(p, tri);
         let location = if exact_location == b.location {
@@ -144,12 +147,12 @@ fn barycentric_examples(out: &mut impl Write) -> Result {
             out,
             "  {:<11} {:<18} {:<38} {:<14} {:<9} {:<9} {}",
             show_q2(&ideal),
-            show_q3(&seed_weights),
+            show_q3(&ideal_weights),
             show_f32s(&b.weights),
             location,
             show_err(err),
             format!("{ulps:.2}"),
-            show_err(vs_seed)
+            show_err(vs_ideal)
         )?;
     }
     writeln!(out)?;
@@ -163,15 +166,15 @@ fn bilinear_examples(out: &mut impl Write) -> Result {
     let params = [(1, 1, 0, 1), (1, 3, 1, 1), (1, 2, 1, 4), (2, 3, 1, 3)];
     writeln!(
         out,
-        "Seed 000, Example 10: the quad x = (0, 0), y = (4, 0), z = (5, 3), w = (0, 2); (α, β) \
-         mapped forward with\nbarytex_interp::bilinear (error against the exact map of the f32 \
-         parameters) and back with inverse_bilinear_2d\n(error against the seed's (α, β) and \
-         against Newton's method in f64 on the f32 point)."
+        "Example 10 (Buss, Exercise IV.7): the quad x = (0, 0), y = (4, 0), z = (5, 3), \
+         w = (0, 2); (α, β) mapped forward with\nbarytex_interp::bilinear (error against the \
+         exact map of the f32 parameters) and back with inverse_bilinear_2d\n(error against the \
+         given (α, β) and against Newton's method in f64 on the f32 point)."
     )?;
     let h = [
         "(α, β)",
         "bilinear (f32)",
-        "seed's point",
+        "exact point",
         "error",
         "inverse_bilinear_2d",
         "vs (α, β)",
@@ -191,7 +194,7 @@ fn bilinear_examples(out: &mut impl Write) -> Result {
             &alpha * &beta,
             (&one - &alpha) * &beta,
         ];
-        let seed_point: [Q; 2] = std::array::from_fn(|i| {
+        let exact_point: [Q; 2] = std::array::from_fn(|i| {
             weights
                 .iter()
                 .zip(&quad_q)
@@ -213,7 +216,7 @@ fn bilinear_examples(out: &mut impl Write) -> Result {
             quad.map(Vec2::as_dvec2),
             DVec2::new(f64::from(a32), f64::from(b32)),
         );
-        let (inverse, vs_seed, vs_newton) = match ab {
+        let (inverse, vs_given, vs_newton) = match ab {
             Some(ab) => (
                 format!("{kind} {}", show_f32s(&[ab.x, ab.y])),
                 show_err(
@@ -232,10 +235,10 @@ fn bilinear_examples(out: &mut impl Write) -> Result {
             "  {:<10} {:<22} {:<13} {:<9} {:<34} {:<9} {}",
             format!("({alpha}, {beta})"),
             show_f32s(&[p.x, p.y]),
-            show_q2(&seed_point),
+            show_q2(&exact_point),
             show_err(forward_err),
             inverse,
-            vs_seed,
+            vs_given,
             vs_newton
         )?;
     }

@@ -5,7 +5,8 @@
 //!   takes the render options).
 //! - `barytex render FILE [--scene N] [--camera N|auto] [--size WxH] [--shading unlit|phong]
 //!   [--filter …] [--aa …] [--threads N] [-o OUT.png] [--print-camera] [--stats]`: a glTF/GLB.
-//! - `barytex examples`: the seed's worked examples, checked against exact arithmetic.
+//! - `barytex examples`: the worked examples of Buss, *3D Computer Graphics* (2003), ch. IV,
+//!   checked against exact arithmetic.
 //! - `barytex report [--out DIR] [--quick]`: the speed-vs-error report of the interpolation
 //!   methods, written as Markdown (`DIR/README.md`, `DIR/interp.md`; default `docs/report`).
 //! - `barytex uv-layout FILE [--scene N] [--size N] [-o DIR]`: the uv layout of every textured
@@ -157,7 +158,8 @@ enum Command {
     Demo(DemoArgs),
     /// Render a glTF 2.0 or GLB file to a PNG.
     Render(RenderFileArgs),
-    /// Print the seed's worked examples, checked against exact arithmetic.
+    /// Print the worked examples of Buss, 3D Computer Graphics (2003), ch. IV, checked against
+    /// exact arithmetic.
     Examples,
     /// Measure every method's speed and error on the same inputs and write the Markdown report.
     Report(ReportArgs),

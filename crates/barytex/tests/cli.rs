@@ -8,12 +8,13 @@ use common::{barytex, gltf_fixture, temp_dir};
 use std::process::Command;
 
 #[test]
-fn examples_prints_the_seed_examples() {
+fn examples_prints_the_worked_examples() {
     let output = barytex().arg("examples").output().unwrap();
     assert!(output.status.success(), "exit status {:?}", output.status);
     let stdout = String::from_utf8(output.stdout).unwrap();
     assert!(stdout.contains("Examples 7 and 9"), "{stdout}");
-    // Example 9's point (1, 0) with the seed's exact weights (5/7, −1/7, 3/7), and its location.
+    // Example 9's point (1, 0) (Buss 2003, Exercise IV.5) with its exact weights
+    // (5/7, −1/7, 3/7), and its location.
     let row = stdout
         .lines()
         .find(|l| l.trim_start().starts_with("(1, 0)") && l.contains("(5/7, -1/7, 3/7)"))

@@ -16,8 +16,9 @@ pub(crate) fn nearest<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing) 
     fetch(level, nearest_index(uv.x, w), nearest_index(uv.y, h), a)
 }
 
-/// Bilinear: two horizontal lerps, then one vertical (seed 001), in the form `a + (b − a)·t`,
-/// so a texel centre returns that texel exactly and a constant stays constant exactly.
+/// Bilinear: two horizontal lerps, then one vertical (L. Yan, GAMES101, Lecture 9), in the form
+/// `a + (b − a)·t`, so a texel centre returns that texel exactly and a constant stays constant
+/// exactly.
 #[must_use]
 #[inline]
 pub(crate) fn bilinear<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing) -> Vec4 {

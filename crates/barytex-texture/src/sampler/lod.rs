@@ -1,4 +1,6 @@
-//! Level of detail from screen-space derivatives (seed 001, Vulkan "Scale Factor Operation").
+//! Level of detail from screen-space derivatives (L. Yan, GAMES101, Lecture 9: `D = log₂ L`;
+//! Vulkan 1.3 "Scale Factor Operation" and "Level-of-Detail Operation"; OpenGL 4.6 core
+//! §8.14.1).
 //!
 //! `ρ = max(|∂uv/∂x|, |∂uv/∂y|)` measured in texels of the base level, `λ = log₂ ρ`: the
 //! footprint of one pixel is `2^λ` texels across, so level `λ` has about one texel per pixel.

@@ -5,9 +5,10 @@ use glam::Vec3;
 
 /// `r = 2(n·v)n − v`: the mirror image of `v` about the normal `n`.
 ///
-/// Convention (the seed's): `v` points **from the surface towards the eye**, so `r` points away
-/// from the surface into the environment. (GLSL's `reflect(I, N)` takes the incident vector
-/// `I = −v`, pointing towards the surface, and returns the same `r`.)
+/// Convention (as in S. Schaefer's *Shading/Texturing* lecture slides, Texas A&M University): `v`
+/// points **from the surface towards the eye**, so `r` points away from the surface into the
+/// environment. (GLSL's `reflect(I, N)` takes the incident vector `I = −v`, pointing towards the
+/// surface, and returns the same `r`.)
 ///
 /// For a unit `n`, `|r| = |v|`. No normalization is done and nothing is checked: NaN or infinite
 /// input gives NaN or infinite output (never a panic); use [`reflect_normalized`] for a checked

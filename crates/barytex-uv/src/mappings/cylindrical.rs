@@ -20,9 +20,10 @@ pub enum CylinderCaps {
     Planar,
 }
 
-/// The seed's cylinder `p(θ, y) = (r sin θ, y, r cos θ)` of radius `r` and height `h` centred
-/// at the origin: `s = θ/2π ∈ [0, 1)` with `θ = atan2(x, z)`, `t = (y + h/2)/h`, and
-/// `(u, v) = (s, 1 − t)` so the top of the cylinder is the top of the image.
+/// The cylinder of Buss, *3D Computer Graphics* (2003), ch. V (Figure V.3),
+/// `p(θ, y) = (r sin θ, y, r cos θ)` of radius `r` and height `h` centred at the origin:
+/// `s = θ/2π ∈ [0, 1)` with `θ = atan2(x, z)`, `t = (y + h/2)/h`, and `(u, v) = (s, 1 − t)` so the
+/// top of the cylinder is the top of the image.
 ///
 /// Points off the cylinder are projected radially (the radius only matters to
 /// [`point_at`](InverseUvMapping::point_at) and the caps). The seam is the half-plane `x = 0`,

@@ -9,12 +9,13 @@
 //! rounds once to f32 for [`PositionMapping`](crate::PositionMapping); a result that would not be finite in
 //! f32 (a gradient overflowing next to an axis) is `None`.
 //!
-//! # From the seed's (s, t) to (u, v)
-//! The seed's formulas give `s` to the right and `t` **up** (OpenGL). barytex's uv has `v` down
-//! (glTF, (0, 0) top-left), so every angular mapping returns `u = s`, `v = 1 − t`, wrapped into
-//! `[0, 1)` where the parameter is periodic: the top of a cylinder and the north pole of a sphere
-//! are at the top of the image. Angles: `θ = atan2(x, z)` about the y axis (θ = 0 on +z, u
-//! increasing towards +x), so `u ∈ [0, 1)` with the seam on the half-plane `x = 0, z < 0`.
+//! # From the textbook's (s, t) to (u, v)
+//! The formulas of Buss, *3D Computer Graphics* (2003), ch. V, give `s` to the right and `t` **up**
+//! (OpenGL). barytex's uv has `v` down (glTF, (0, 0) top-left), so every angular mapping returns
+//! `u = s`, `v = 1 − t`, wrapped into `[0, 1)` where the parameter is periodic: the top of a
+//! cylinder and the north pole of a sphere are at the top of the image. Angles: `θ = atan2(x, z)`
+//! about the y axis (θ = 0 on +z, u increasing towards +x), so `u ∈ [0, 1)` with the seam on the
+//! half-plane `x = 0, z < 0`.
 //!
 //! # Inverses
 //! [`InverseUvMapping::point_at`] maps a texture coordinate back to the surface (the plane, the

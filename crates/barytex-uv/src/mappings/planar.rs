@@ -8,10 +8,11 @@ use crate::{PositionMapping, UvError, UvJacobian};
 /// Planar projection: `u` and `v` are the coordinates of the point in the frame
 /// `(origin, u_axis, v_axis)`, projected along the plane's normal.
 ///
-/// For orthogonal axes this is the seed's `u = (p − o)·U/|U|²`, `v = (p − o)·V/|V|²`; for skew
-/// axes the dual basis is used so that [`point_at`](InverseUvMapping::point_at)
-/// (`o + u U + v V`) is an exact inverse on the plane. The Jacobian is constant: `∇u` and `∇v`
-/// are the dual axes.
+/// For orthogonal axes this is the inverse of linear interpolation along each axis (Buss, *3D
+/// Computer Graphics* (2003), §IV.1: `α = (u − x₁)·(x₂ − x₁)/|x₂ − x₁|²`), `u = (p − o)·U/|U|²`,
+/// `v = (p − o)·V/|V|²`; for skew axes the dual basis is used so that
+/// [`point_at`](InverseUvMapping::point_at) (`o + u U + v V`) is an exact inverse on the plane. The
+/// Jacobian is constant: `∇u` and `∇v` are the dual axes.
 ///
 /// # Accuracy
 /// Evaluated in f64 and rounded once: `uv` within 1 f32 ulp of the f64 formula, which matches

@@ -1,4 +1,5 @@
-//! Spherical mapping in the seed's two projections.
+//! Spherical mapping in the two projections of Buss, *3D Computer Graphics* (2003), eqs. (V.2)
+//! and (V.3).
 
 use core::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -7,19 +8,22 @@ use glam::{DVec2, DVec3, Vec2, Vec3};
 use super::{DUvJacobian, InverseUvMapping, UvMapping64, unit_turns, wrap_unit_f32};
 use crate::{PositionMapping, UvError, UvJacobian};
 
-/// How latitude `φ ∈ [−π/2, π/2]` becomes the seed's `t` (and `v = 1 − t`).
+/// How latitude `φ ∈ [−π/2, π/2]` becomes Buss's `t` (and `v = 1 − t`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum SphereProjection {
-    /// `t = φ/π + 1/2` (latitude linear; the seed's `φ/180 + 1/2` in degrees): `v = 1/2 − φ/π`.
+    /// `t = φ/π + 1/2` (latitude linear; Buss's eq. (V.2), `φ/180 + 1/2` in degrees):
+    /// `v = 1/2 − φ/π`.
     #[default]
     Equirectangular,
-    /// `t = sin φ/2 + 1/2` (Lambert's cylindrical equal-area): `v = (1 − sin φ)/2`.
+    /// `t = sin φ/2 + 1/2` (Buss's eq. (V.3), the cylindrical projection: Lambert's cylindrical
+    /// equal-area): `v = (1 − sin φ)/2`.
     EqualArea,
 }
 
-/// The seed's sphere about the origin: `s = θ/2π ∈ [0, 1)` with `θ = atan2(x, z)`, latitude
-/// `φ = atan2(y, √(x² + z²))`, `t` from the [`SphereProjection`], and `(u, v) = (s, 1 − t)`: the
-/// north pole (+y) is the top row of the image (`v = 0`), the south pole the bottom (`v = 1`).
+/// The sphere about the origin of Buss, *3D Computer Graphics* (2003), ch. V (Figure V.5):
+/// `s = θ/2π ∈ [0, 1)` with `θ = atan2(x, z)`, latitude `φ = atan2(y, √(x² + z²))`, `t` from the
+/// [`SphereProjection`], and `(u, v) = (s, 1 − t)`: the north pole (+y) is the top row of the image
+/// (`v = 0`), the south pole the bottom (`v = 1`).
 ///
 /// Points off the sphere are projected radially (the radius only matters to
 /// [`point_at`](InverseUvMapping::point_at)). The seam is the half-plane `x = 0`, `z < 0`. On

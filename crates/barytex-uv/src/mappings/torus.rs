@@ -7,7 +7,7 @@ use glam::{DVec2, DVec3, Vec2, Vec3};
 use super::{DUvJacobian, InverseUvMapping, UvMapping64, unit_turns, wrap_unit_f32};
 use crate::{PositionMapping, UvError, UvJacobian};
 
-/// The seed's torus about the y axis,
+/// The torus about the y axis of Buss, *3D Computer Graphics* (2003), ch. V (Figure V.6),
 /// `P(θ, φ) = ((R + r cos φ) sin θ, r sin φ, (R + r cos φ) cos θ)`, with `s = θ/2π` and
 /// `t = φ/2π`, both in `[0, 1)`, and `(u, v) = (s, 1 − t)` wrapped into `[0, 1)`: `φ = 0` (the
 /// outer equator) is the top row, and `v` grows as `φ` goes down over the inside of the ring.

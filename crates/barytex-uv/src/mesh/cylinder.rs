@@ -6,9 +6,9 @@ use super::TriMesh;
 use super::builder::{Builder, Vertex, at_least, fraction, turn, within_limit};
 use crate::UvError;
 
-/// The cylinder of radius 1 around the `y` axis, `y ∈ [−1, 1]`: the seed's
-/// `P(θ, y) = (sin θ, y, cos θ)`, `u = θ/2π`, `v = (1 − y)/2` (top of the texture at the top),
-/// `segments` columns around and `rings` rows along the axis.
+/// The cylinder of radius 1 around the `y` axis, `y ∈ [−1, 1]`: Buss, *3D Computer Graphics*
+/// (2003), ch. V, `P(θ, y) = (sin θ, y, cos θ)`, `u = θ/2π`, `v = (1 − y)/2` (top of the texture at
+/// the top), `segments` columns around and `rings` rows along the axis.
 ///
 /// With `caps`, each end is closed by a fan of `segments` triangles around a centre vertex; a cap
 /// is planar-mapped onto the whole texture (`u = (x + 1)/2`, `v = (z + 1)/2` on top, `v = (1 −

@@ -1,4 +1,5 @@
-//! The UV sphere, in either of the seed's latitude mappings.
+//! The UV sphere, in either latitude mapping of Buss, *3D Computer Graphics* (2003), eqs. (V.2)
+//! and (V.3).
 
 use core::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -11,11 +12,12 @@ use crate::UvError;
 /// How the sphere's latitude `φ` becomes `v` (`u = θ/2π` in both).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum SphereUv {
-    /// The seed's `t = φ/180° + 1/2` (equirectangular: rows of equal latitude step are equally
-    /// tall in the texture); `v = 1 − t`.
+    /// Buss's eq. (V.2), `t = φ/180° + 1/2` (equirectangular: rows of equal latitude step are
+    /// equally tall in the texture); `v = 1 − t`.
     #[default]
     Equirectangular,
-    /// The seed's `t = sin φ / 2 + 1/2` (Lambert's cylindrical equal-area projection); `v = 1 − t`.
+    /// Buss's eq. (V.3), `t = sin φ / 2 + 1/2` (Lambert's cylindrical equal-area projection);
+    /// `v = 1 − t`.
     EqualArea,
 }
 
@@ -33,9 +35,10 @@ pub fn sphere(segments: u32, rings: u32) -> Result<TriMesh, UvError> {
     sphere_with(segments, rings, SphereUv::Equirectangular)
 }
 
-/// The unit sphere of the seed, `P(θ, φ) = (sin θ cos φ, sin φ, cos θ cos φ)`, with `segments`
-/// columns (`θ ∈ [0, 2π]`, the `θ = 0` and `θ = 2π` columns duplicated) and `rings` rows
-/// (`φ` from `+π/2` at the top of the texture to `−π/2`), `u = θ/2π` and `v` from `uv`.
+/// The unit sphere of Buss, *3D Computer Graphics* (2003), ch. V,
+/// `P(θ, φ) = (sin θ cos φ, sin φ, cos θ cos φ)`, with `segments` columns (`θ ∈ [0, 2π]`, the
+/// `θ = 0` and `θ = 2π` columns duplicated) and `rings` rows (`φ` from `+π/2` at the top of the
+/// texture to `−π/2`), `u = θ/2π` and `v` from `uv`.
 ///
 /// Each pole is one vertex per column, at the column's middle `u`; the collapsed half of each
 /// pole quad is left out, so a sphere has `2·segments·(rings − 1)` triangles.

@@ -6,11 +6,12 @@ use super::TriMesh;
 use super::builder::{Builder, Vertex, at_least, fraction, turn, within_limit};
 use crate::UvError;
 
-/// The torus of the seed around the `y` axis, major radius `major` (`R`), minor `minor` (`r`):
-/// `P(θ, φ) = ((R + r cos φ) sin θ, r sin φ, (R + r cos φ) cos θ)`, `u = θ/2π`, `v = −φ/2π`
-/// (mod 1; `v` grows downward across the outer equator, so the texture is unmirrored), with
-/// `segments` columns around the axis and `rings` rows around the tube; both seams (`u = 0/1`
-/// and `v = 0/1`) are duplicated.
+/// The torus of Buss, *3D Computer Graphics* (2003), ch. V (Figure V.6), around the `y` axis, major
+/// radius `major` (`R`), minor `minor` (`r`):
+/// `P(θ, φ) = ((R + r cos φ) sin θ, r sin φ, (R + r cos φ) cos θ)`, `u = θ/2π`, `v = −φ/2π` (mod 1;
+/// `v` grows downward across the outer equator, so the texture is unmirrored), with `segments`
+/// columns around the axis and `rings` rows around the tube; both seams (`u = 0/1` and `v = 0/1`)
+/// are duplicated.
 ///
 /// # Errors
 /// [`UvError::NonFinite`] for a NaN or infinite radius; [`UvError::OutOfRange`] unless

@@ -276,12 +276,12 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
         intro: "Weights `[α, β, γ]` of a point in a triangle. Errors are per input the largest of \
                 the three weights' errors against the exact rational weights; ulps are f32 ulps \
                 of the exact weight (a weight that should be exactly 0 and is not has an \
-                enormous ulp error); the bar is REFERENCES.md's `4 ulp + 2⁻²⁴·κ` with \
-                `κ = max(|p|, |a|, |b|, |c|) · longest edge / |2·area|`. Wrong signs count \
-                weights whose sign (−, 0, +) differs from the exact one; wrong class counts \
-                points whose location (inside / on edge i / on vertex i / outside) differs — \
-                for the methods without a classification it is read from the signs of their \
-                weights."
+                enormous ulp error); the bar is the project's (`docs/ACCURACY.md`) \
+                `4 ulp + 2⁻²⁴·κ` with `κ = max(|p|, |a|, |b|, |c|) · longest edge / |2·area|`. \
+                Wrong signs count weights whose sign (−, 0, +) differs from the exact one; wrong \
+                class counts points whose location (inside / on edge i / on vertex i / outside) \
+                differs — for the methods without a classification it is read from the signs of \
+                their weights."
             .to_owned(),
         ..Section::default()
     };

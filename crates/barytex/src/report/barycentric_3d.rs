@@ -1,5 +1,6 @@
-//! 3D barycentric coordinates: Cramer's dot form, the cross-product form, the seed's
-//! precomputed form and the default, against exact rational weights.
+//! 3D barycentric coordinates: Cramer's dot form, the cross-product form, the precomputed form of
+//! Buss, *3D Computer Graphics* (2003), §IV.1 (`β = u_β·f`, `γ = u_γ·f`) and the default, against
+//! exact rational weights.
 
 use barytex_interp::barycentric_3d;
 use barytex_interp::hard_cases::triangles_3d;

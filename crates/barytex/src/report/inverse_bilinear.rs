@@ -17,7 +17,7 @@ use crate::timing::ns_per_call;
 use barytex_testkit::seeded::{self, XorShift};
 use barytex_testkit::strategies::step_ulps;
 
-/// The bar of REFERENCES.md at unit scale.
+/// The project's accuracy bar for inverse bilinear at unit scale (`docs/ACCURACY.md`).
 const BAR: f64 = 3e-7;
 
 /// A point, its quad, and the f64 Newton reference preimage.
@@ -208,9 +208,10 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
         (
             "hard cases".to_owned(),
             format!(
-                "`barytex_interp::hard_cases::quads()`: the seed's Example 10, an exact \
-                 parallelogram, a near-parallelogram, a trapezoid, a sliver, tiny scales to \
-                 1e-30, subnormal size and offsets 1e4 … 1e7.{}",
+                "`barytex_interp::hard_cases::quads()`: Example 10 (the quad of Exercise IV.7 in \
+                 Buss, *3D Computer Graphics*, 2003), an exact parallelogram, a \
+                 near-parallelogram, a trapezoid, a sliver, tiny scales to 1e-30, subnormal size \
+                 and offsets 1e4 … 1e7.{}",
                 if unreferenced.is_empty() {
                     String::new()
                 } else {
@@ -230,11 +231,11 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
                 (`reference::bilinear_f64`) and rounds the point to f32; the reference is \
                 Newton's method in f64 on that rounded point, started from the known (α, β). \
                 The error is the max-norm distance in parameter space; ulps are f32 ulps of the \
-                reference parameter (max of α and β); the bar column divides by REFERENCES.md's \
-                3e-7 (its unit-scale bar). Every reference preimage is inside [0, 1]², so \
-                \"wrong class\" counts answers that say the point is outside the quad (for the \
-                port: a result outside [0, 1]²). For a folded quad the default's preimage \
-                nearer the reference is scored."
+                reference parameter (max of α and β); the bar column divides by the project's \
+                unit-scale bar 3e-7 (`docs/ACCURACY.md`). Every reference preimage is inside \
+                [0, 1]², so \"wrong class\" counts answers that say the point is outside the \
+                quad (for the port: a result outside [0, 1]²). For a folded quad the default's \
+                preimage nearer the reference is scored."
             .to_owned(),
         ..Section::default()
     };

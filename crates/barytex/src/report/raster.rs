@@ -86,7 +86,7 @@ fn perspective_table(settings: Settings, runs: usize) -> Table {
             "affine spans of 32 px",
             Interpolation::AffineSpans { span: 32 },
         ),
-        ("affine (the seed's artefact)", Interpolation::Affine),
+        ("affine (wrong foreshortening)", Interpolation::Affine),
     ];
     let mut rows = Vec::new();
     let mut pixels = 0;

@@ -231,8 +231,9 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
     progress("vectors");
     let vectors = vector_table(settings);
     let mut spacing = String::from(
-        "Renormalized lerp of normals θ apart stays on the arc but is unevenly spaced (seed 003); \
-         its largest angular error against even spacing (`renormalize_spacing_error`):",
+        "Renormalized lerp of normals θ apart stays on the arc but is unevenly spaced (as S. \
+         Schaefer's *Shading/Texturing* lecture slides note); its largest angular error against \
+         even spacing (`renormalize_spacing_error`):",
     );
     for degrees in [10.0f64, 30.0, 60.0, 90.0, 120.0, 170.0] {
         let _ = write!(

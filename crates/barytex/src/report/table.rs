@@ -46,7 +46,7 @@ pub(crate) struct Row {
     pub(crate) abs: Option<ErrorStats>,
     /// Error in f32 ulps of the exact value per input (max over components).
     pub(crate) ulps: Option<ErrorStats>,
-    /// Largest ratio of error to the accuracy bar of REFERENCES.md (≤ 1 meets it).
+    /// Largest ratio of error to the project's accuracy bar (`docs/ACCURACY.md`; ≤ 1 meets it).
     pub(crate) bar: Option<f64>,
     /// Results whose sign differs from the exact sign.
     pub(crate) wrong_signs: Option<usize>,

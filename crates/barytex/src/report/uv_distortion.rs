@@ -16,7 +16,10 @@ fn surfaces(a: u32, b: u32) -> Vec<(&'static str, Result<TriMesh, UvError>)> {
     vec![
         ("plane, planar", mesh::plane(a, a)),
         ("cube, 3 × 2 atlas", mesh::cube(b)),
-        ("cylinder (open), seed θ/2π, y", mesh::cylinder(a, b, false)),
+        (
+            "cylinder (open), s = θ/2π, t linear in y",
+            mesh::cylinder(a, b, false),
+        ),
         ("cylinder with planar caps", mesh::cylinder(a, b, true)),
         (
             "sphere, equirectangular (t = φ/180° + 1/2)",
@@ -27,7 +30,7 @@ fn surfaces(a: u32, b: u32) -> Vec<(&'static str, Result<TriMesh, UvError>)> {
             mesh::sphere_with(a, b, SphereUv::EqualArea),
         ),
         (
-            "torus R = 1, r = 0.4, seed θ/2π, φ/2π",
+            "torus R = 1, r = 0.4, s = θ/2π, t = φ/2π",
             mesh::torus(a, b, 1.0, 0.4),
         ),
     ]
