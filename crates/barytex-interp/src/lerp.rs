@@ -77,9 +77,13 @@ exact_lerp!(
 
 /// The parameter `t` with `lerp(a, b, t) == x`: `(x − a)/(b − a)`.
 ///
-/// Returns `None` when `a == b` (every or no `t` would do) or when an input is not finite. A
-/// quotient beyond f32's range is returned as the infinity of its sign.
-/// `inverse_lerp(a, b, a) == Some(0.0)` and `inverse_lerp(a, b, b) == Some(1.0)` exactly.
+/// A quotient beyond f32's range is returned as the infinity of its sign.
+/// `inverse_lerp(a, b, a) == Ok(0.0)` and `inverse_lerp(a, b, b) == Ok(1.0)` exactly.
+///
+/// # Errors
+/// [`InterpError::DegenerateSegment`](crate::InterpError::DegenerateSegment) when `a == b`
+/// (every or no `t` would do), [`InterpError::NonFinite`](crate::InterpError::NonFinite) when an
+/// input is NaN or infinite (`what` is `"a"`, `"b"` or `"x"`).
 ///
 /// # Accuracy
 /// Computed in f64 and rounded once: within 1 ulp of the exact quotient of the f32 inputs when
@@ -87,16 +91,21 @@ exact_lerp!(
 ///
 /// ```
 /// use barytex_interp::inverse_lerp;
-/// assert_eq!(inverse_lerp(2.0, 4.0, 3.0), Some(0.5));
-/// assert_eq!(inverse_lerp(2.0, 2.0, 3.0), None);
+/// use barytex_interp::InterpError;
+/// assert_eq!(inverse_lerp(2.0, 4.0, 3.0), Ok(0.5));
+/// assert_eq!(inverse_lerp(2.0, 2.0, 3.0), Err(InterpError::DegenerateSegment));
 /// ```
-#[must_use]
-pub fn inverse_lerp(a: f32, b: f32, x: f32) -> Option<f32> {
-    if !(a.is_finite() && b.is_finite() && x.is_finite()) || a == b {
-        return None;
+pub fn inverse_lerp(a: f32, b: f32, x: f32) -> Result<f32, crate::InterpError> {
+    for (what, v) in [("a", a), ("b", b), ("x", x)] {
+        if !v.is_finite() {
+            return Err(crate::InterpError::NonFinite { what });
+        }
+    }
+    if a == b {
+        return Err(crate::InterpError::DegenerateSegment);
     }
     let (a, b, x) = (f64::from(a), f64::from(b), f64::from(x));
-    Some(((x - a) / (b - a)) as f32)
+    Ok(((x - a) / (b - a)) as f32)
 }
 
 /// The seed's projection formula: the parameter α of the point on the line through `x1`, `x2`

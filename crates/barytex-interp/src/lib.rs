@@ -10,18 +10,42 @@
 //! | checked weights | [`AffineCombination`], [`ConvexCombination`] |
 //! | exact orientation | [`orient2d`], [`Orientation`] |
 //! | exact 3D orientation | [`orient3d`] |
-//! | barycentric coordinates | [`barycentric_2d`], [`locate_2d`], [`Location`], [`barycentric_3d`], [`methods`] |
+//! | barycentric coordinates | [`barycentric_2d`] → [`Barycentric2d`], [`locate_2d`] → [`Location`], [`barycentric_3d`] → [`Barycentric3d`], [`methods`] |
 //! | convex polygons (generalized barycentric) | [`wachspress_weights`], [`mean_value_weights`], [`GeneralizedBarycentric`], [`interpolate_polygon`], [`PolygonLocation`], [`PolygonError`] |
 //! | quads and cubes | [`bilinear`], [`inverse_bilinear_2d`], [`inverse_bilinear_3d`], [`trilinear`] |
 //! | projective space | [`Homogeneous3`], [`perspective_correct_weights`], [`perspective_interpolate`] |
-//! | spherical interpolation | [`slerp_vec3`] (and `_vec2`, `_vec3a`, `_vec4`, `_dvec*`), [`slerp_quat`], [`slerp_dquat`], [`QuatPath`], the fast [`nlerp_quat`], [`nlerp_corrected_quat`], [`slerp_eberly_quat`] behind [`QuatInterpolation`], normals by [`interpolate_normal`] |
+//! | spherical interpolation | [`slerp`] and [`try_slerp`] for every [`Slerp`] type (glam's `Vec2`, `Vec3`, `Vec3A`, `Vec4`, `Quat` and their `D` twins), [`slerp_along`] with [`QuatPath`], the fast [`nlerp_quat`], [`nlerp_corrected_quat`] with [`NlerpCorrection`], [`slerp_eberly_quat`] behind [`QuatInterpolation`], normals by [`interpolate_normal`] |
 //! | 2D convex hull (exact) | [`convex_hull_2d`], [`ConvexHull2d`], [`CollinearPoints`], [`HullShape2d`], [`HullError2d`], [`HullDefect2d`] |
 //! | 3D convex hull | [`convex_hull_3d`], [`ConvexHull3d`], [`HullError3d`], [`HullDefect3d`] |
 //!
-//! Conventions: f32 on the data path, f64 or exact arithmetic inside predicates and solvers;
-//! orientation signs are those of the determinant `(b − a) × (c − a)` in a y-up frame. Nothing
-//! panics on NaN, infinite, huge or degenerate input: it returns an error, `None`, or a documented
-//! value.
+//! # Conventions
+//!
+//! - **Numbers.** f32 on the data path, f64 or exact arithmetic inside predicates and solvers;
+//!   orientation signs are those of the determinant `(b − a) × (c − a)` in a y-up frame.
+//! - **Results are structs or enums, not bare tuples or arrays**, named after their function:
+//!   [`barycentric_2d`] → [`Barycentric2d`], [`barycentric_3d`] → [`Barycentric3d`],
+//!   [`inverse_bilinear_2d`] → [`InverseBilinear`], [`convex_hull_2d`] → [`ConvexHull2d`].
+//! - **One generic function per operation, not one per glam type**: [`slerp`] works on every
+//!   [`Slerp`] type; an option is an enum ([`QuatPath`], [`NlerpCorrection`],
+//!   [`NormalInterpolation`]), never a `bool`.
+//! - **Errors.** Nothing panics on NaN, infinite, huge or degenerate input. What happens instead
+//!   depends on the kind of function, one rule per kind:
+//!   - *Predicates, locators, solvers and constructors* ([`orient2d`], [`orient3d`],
+//!     [`locate_2d`], [`barycentric_2d`], [`barycentric_3d`], [`inverse_lerp`],
+//!     [`segment_parameter_2d`], [`inverse_bilinear_2d`], [`perspective_correct_weights`],
+//!     [`AffineCombination::new`], …) return `Result<_, InterpError>`; the variant says which
+//!     input was bad and why. A concept with failure modes of its own has its own error enum in
+//!     the same role: [`HullError2d`], [`HullError3d`], [`PolygonError`].
+//!   - *Interpolators* ([`lerp`], [`bilinear`], [`trilinear`], [`slerp`], [`nlerp_quat`],
+//!     [`interpolate_normal`], …) are total: bad input gives the value their docs state (the
+//!     zero vector for the SLERP family, IEEE propagation of NaN for [`lerp`]). Where a caller
+//!     needs to tell bad input apart, a `try_` twin ([`try_slerp`], [`try_slerp_along`]) returns
+//!     `Result<_, InterpError>`, an error for exactly the inputs the total form maps to its
+//!     fallback.
+//!   - `Option` is only for a query whose empty answer is a legitimate outcome, not a rejected
+//!     input: [`InverseBilinear::inside`] (no preimage in the unit square),
+//!     [`Homogeneous3::to_point`] (a point at infinity), [`Interpolate::combine`] (nothing to
+//!     combine).
 //!
 //! ```
 //! use barytex_interp::{barycentric_2d, Location};
@@ -66,8 +90,8 @@ mod polygon;
 mod slerp;
 mod trilinear;
 
-pub use barycentric2d::{Barycentric, Location, barycentric_2d, locate_2d};
-pub use barycentric3d::barycentric_3d;
+pub use barycentric2d::{Barycentric2d, Location, barycentric_2d, locate_2d};
+pub use barycentric3d::{Barycentric3d, barycentric_3d};
 pub use bilinear::bilinear;
 pub use combination::{AffineCombination, ConvexCombination};
 pub use error::InterpError;

@@ -182,8 +182,11 @@ impl GeneralizedBarycentric {
 
 /// `Σ wᵢ·valuesᵢ`: the value at a point from its polygon weights and the per-vertex values.
 ///
-/// Returns `None` when the slices differ in length or are empty. Weights `eᵢ` (a point on
-/// vertex `i`) return `values[i]` exactly for finite values.
+/// Weights `eᵢ` (a point on vertex `i`) return `values[i]` exactly for finite values.
+///
+/// # Errors
+/// [`PolygonError::WeightsLength`] when the slices differ in length,
+/// [`PolygonError::TooFewVertices`] when they are empty.
 ///
 /// # Accuracy
 /// One [`Interpolate::combine`]: the bound of the `Interpolate` laws
@@ -196,13 +199,19 @@ impl GeneralizedBarycentric {
 /// let mut w = [0.0; 4];
 /// mean_value_weights(Vec2::new(2.0, 1.0), &quad, &mut w)?;
 /// let v = interpolate_polygon(&w, &[0.0f32, 1.0, 3.0, 0.0]);
-/// assert_eq!(v, Some(2.0)); // halfway along the edge from 1.0 to 3.0
+/// assert_eq!(v, Ok(2.0)); // halfway along the edge from 1.0 to 3.0
 /// # Ok::<(), barytex_interp::PolygonError>(())
 /// ```
-#[must_use]
-pub fn interpolate_polygon<T: Interpolate>(weights: &[f32], values: &[T]) -> Option<T> {
+pub fn interpolate_polygon<T: Interpolate>(
+    weights: &[f32],
+    values: &[T],
+) -> Result<T, PolygonError> {
     if weights.len() != values.len() {
-        return None;
+        return Err(PolygonError::WeightsLength {
+            vertices: values.len(),
+            weights: weights.len(),
+        });
     }
     T::combine(values.iter().copied().zip(weights.iter().copied()))
+        .ok_or(PolygonError::TooFewVertices { count: 0 })
 }

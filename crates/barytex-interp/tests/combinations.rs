@@ -45,7 +45,7 @@ proptest! {
             let n = (pts[1] - pts[0]).cross(pts[2] - pts[0]).length();
             let e = (pts[1] - pts[0]).length().max((pts[2] - pts[0]).length()).max((pts[2] - pts[1]).length());
             let slack = 1e-5 * (1.0 + 20.0 * e * e / n.max(1e-30));
-            prop_assert!(b.iter().all(|&x| x >= -slack), "{b:?}");
+            prop_assert!(b.weights.iter().all(|&x| x >= -slack), "{b:?}");
         }
     }
 

@@ -111,15 +111,28 @@ fn special_values_never_panic() {
         );
         assert!(lerp(1.0, v, 0.5).is_nan() || v.is_infinite());
         assert!(lerp(1.0, 2.0, v).is_nan() || v.is_infinite());
-        assert_eq!(inverse_lerp(v, 1.0, 0.5), None);
-        assert_eq!(inverse_lerp(0.0, 1.0, v), None);
+        assert_eq!(
+            inverse_lerp(v, 1.0, 0.5),
+            Err(InterpError::NonFinite { what: "a" })
+        );
+        assert_eq!(
+            inverse_lerp(0.0, v, 0.5),
+            Err(InterpError::NonFinite { what: "b" })
+        );
+        assert_eq!(
+            inverse_lerp(0.0, 1.0, v),
+            Err(InterpError::NonFinite { what: "x" })
+        );
     }
     assert!(lerp(f32::NEG_INFINITY, f32::INFINITY, 0.5).is_nan());
     assert_eq!(lerp(f32::NAN, 2.0, 1.0), 2.0);
     assert!(lerp(f32::NAN, 2.0, 0.5).is_nan());
     assert!(lerp(f32::NAN, 2.0, 1.5).is_nan());
     assert!(lerp(1.0, f32::NAN, 0.5).is_nan());
-    assert_eq!(inverse_lerp(2.0, 2.0, 2.0), None);
+    assert_eq!(
+        inverse_lerp(2.0, 2.0, 2.0),
+        Err(InterpError::DegenerateSegment)
+    );
     assert_eq!(
         segment_parameter_2d(Vec2::ONE, Vec2::ZERO, Vec2::ZERO),
         Err(InterpError::DegenerateSegment)

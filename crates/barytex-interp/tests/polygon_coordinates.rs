@@ -503,11 +503,20 @@ fn large_polygons_take_the_second_pass() {
 /// `interpolate_polygon` rejects mismatched lengths and empty input.
 #[test]
 fn interpolate_polygon_lengths() {
-    assert_eq!(interpolate_polygon::<f32>(&[1.0], &[]), None);
-    assert_eq!(interpolate_polygon::<f32>(&[], &[]), None);
+    assert_eq!(
+        interpolate_polygon::<f32>(&[1.0], &[]),
+        Err(PolygonError::WeightsLength {
+            vertices: 0,
+            weights: 1
+        })
+    );
+    assert_eq!(
+        interpolate_polygon::<f32>(&[], &[]),
+        Err(PolygonError::TooFewVertices { count: 0 })
+    );
     assert_eq!(
         interpolate_polygon(&[0.25, 0.75], &[Vec2::ZERO, Vec2::splat(4.0)]),
-        Some(Vec2::splat(3.0))
+        Ok(Vec2::splat(3.0))
     );
 }
 

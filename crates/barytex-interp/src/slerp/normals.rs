@@ -8,7 +8,7 @@
 
 use glam::Vec3;
 
-use super::exact::slerp_vec3;
+use super::exact::slerp;
 
 /// How [`interpolate_normal`] moves from one normal to the other.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -16,7 +16,7 @@ pub enum NormalInterpolation {
     /// Lerp, then renormalize: cheap, uneven angular spacing (see [`renormalize_spacing_error`]).
     #[default]
     Renormalize,
-    /// [`slerp_vec3`]: even spacing, exact ends, a few times the cost.
+    /// [`slerp`]: even spacing, exact ends, a few times the cost.
     Slerp,
 }
 
@@ -25,10 +25,10 @@ pub enum NormalInterpolation {
 /// # Special values
 /// Zero or non-finite normals give the zero vector; with `Renormalize`, opposite normals at
 /// `t = ½` give the zero vector too (their lerp vanishes), with `Slerp` the deterministic
-/// perpendicular of [`slerp_vec3`]. Never NaN.
+/// perpendicular of [`slerp`]. Never NaN.
 ///
 /// # Accuracy
-/// `Slerp`: as [`slerp_vec3`]. `Renormalize`: angle to the evenly spaced normal within
+/// `Slerp`: as [`slerp`]. `Renormalize`: angle to the evenly spaced normal within
 /// [`renormalize_spacing_error`]`(θ)` plus 2.4e-7 (test `normal_spacing` in `tests/slerp.rs`).
 ///
 /// ```
@@ -44,7 +44,7 @@ pub enum NormalInterpolation {
 pub fn interpolate_normal(n0: Vec3, n1: Vec3, t: f32, method: NormalInterpolation) -> Vec3 {
     match method {
         NormalInterpolation::Renormalize => (n0 + (n1 - n0) * t).normalize_or_zero(),
-        NormalInterpolation::Slerp => slerp_vec3(n0, n1, t),
+        NormalInterpolation::Slerp => slerp(n0, n1, t),
     }
 }
 
