@@ -293,7 +293,8 @@ fn perspective_interpolate_fails_exactly_when_the_weights_do() {
         ([f32::NAN, 0.5, 0.5], [1.0; 3]),
         ([0.0; 3], [1.0; 3]),
     ] {
-        let error = barytex_interp::perspective_correct_weights(screen, w).unwrap_err();
+        let error = barytex_interp::perspective_correct_weights(screen, w)
+            .expect_err("bad input is rejected");
         assert_eq!(
             perspective_interpolate(values, screen, w),
             Err(error),
