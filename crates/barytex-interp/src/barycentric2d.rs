@@ -1,4 +1,5 @@
-//! 2D barycentric coordinates with exact classification (seed 000, Theorems 4, 5 and 8).
+//! 2D barycentric coordinates with exact classification (Buss 2003, ch. IV, barycentric
+//! coordinates; Denisjuk, Theorems 4, 5 and 8).
 
 use glam::Vec2;
 
@@ -8,6 +9,17 @@ use crate::{InterpError, Interpolate, interpolate3};
 /// Where a point lies relative to a triangle, decided exactly.
 ///
 /// Edge `i` is the edge opposite vertex `i` (the one where weight `i` is zero).
+///
+/// ```
+/// use barytex_interp::{locate_2d, Location};
+/// use glam::Vec2;
+/// let tri = [Vec2::ZERO, Vec2::new(4.0, 0.0), Vec2::new(0.0, 4.0)];
+/// let on_vertex = locate_2d(Vec2::new(4.0, 0.0), tri)?;
+/// assert_eq!(on_vertex, Location::OnVertex(1));
+/// assert!(on_vertex.is_inside_closed());
+/// assert!(!locate_2d(Vec2::new(-1.0, 0.0), tri)?.is_inside_closed());
+/// # Ok::<(), barytex_interp::InterpError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Location {
     /// Strictly inside: all three weights positive.
@@ -144,7 +156,7 @@ pub fn locate_2d(p: Vec2, tri: [Vec2; 3]) -> Result<Location, InterpError> {
 /// ```
 /// use barytex_interp::{barycentric_2d, Location};
 /// use glam::Vec2;
-/// // Seed 000, Example 7: x = (0,0), y = (2,3), z = (3,1).
+/// // Denisjuk, Example 7: x = (0,0), y = (2,3), z = (3,1).
 /// let tri = [Vec2::new(0.0, 0.0), Vec2::new(2.0, 3.0), Vec2::new(3.0, 1.0)];
 /// let b = barycentric_2d(Vec2::new(1.0, 0.0), tri)?;
 /// assert_eq!(b.location, Location::Outside);
@@ -184,7 +196,7 @@ pub(crate) mod methods {
         dop + err
     }
 
-    /// The seed's formula in plain f32: `β = (z−x)×(u−x) / (z−x)×(y−x)`,
+    /// The textbook formula (Denisjuk, Theorem 8) in plain f32: `β = (z−x)×(u−x) / (z−x)×(y−x)`,
     /// `γ = (u−x)×(y−x) / (z−x)×(y−x)`, `α = 1 − β − γ`.
     ///
     /// # Accuracy

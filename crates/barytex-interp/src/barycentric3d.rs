@@ -1,4 +1,4 @@
-//! 3D barycentric coordinates (seed 000, "Obliczenie barycentrycznych współrzędnych w R³").
+//! 3D barycentric coordinates (Buss 2003, ch. IV, barycentric coordinates in R³).
 
 use glam::{DVec3, Vec3, Vec3Swizzles};
 
@@ -142,7 +142,7 @@ pub(crate) mod methods {
         [1.0 - beta - gamma, beta, gamma]
     }
 
-    /// The seed's precomputed form: per triangle
+    /// Buss's precomputed form (2003, ch. IV): per triangle
     /// `u_β = (e₂²e₁ − (e₁·e₂)e₂)/(e₁²e₂² − (e₁·e₂)²)` and `u_γ` likewise, then per point
     /// `β = u_β·f`, `γ = u_γ·f` with `f = p − a`: two dot products per query.
     ///

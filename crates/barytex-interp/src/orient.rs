@@ -9,6 +9,15 @@ use crate::InterpError;
 ///
 /// "Counter-clockwise" is meant in a y-up frame (mathematics); on a y-down screen the same sign
 /// looks clockwise.
+///
+/// ```
+/// use barytex_interp::{orient2d, Orientation};
+/// use glam::Vec2;
+/// let o = orient2d(Vec2::ZERO, Vec2::X, Vec2::new(0.5, -1.0))?;
+/// assert_eq!(o, Orientation::Clockwise);
+/// assert_eq!(o.sign(), -1);
+/// # Ok::<(), barytex_interp::InterpError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Orientation {
     /// `(b − a) × (c − a) > 0`: `c` is left of `a → b`.

@@ -1,12 +1,13 @@
-//! Perspective-correct (hyperbolic) interpolation (seed 000; seed 004: interpolate `u/z`, `v/z`
-//! and `1/z` linearly on screen, then divide).
+//! Perspective-correct (hyperbolic) interpolation (Buss 2003, ch. IV, hyperbolic interpolation;
+//! Heckbert and Moreton 1991: interpolate `u/z`, `v/z` and `1/z` linearly on screen, then
+//! divide).
 
 use crate::{InterpError, Interpolate};
 
 /// Turn screen-space (affine) weights `αᵢ` into perspective-correct weights
 /// `βᵢ = (αᵢ/wᵢ) / Σⱼ(αⱼ/wⱼ)`, where `wᵢ` is vertex `i`'s clip-space `w` (its view depth).
 ///
-/// Interpolating attributes with `βᵢ` equals interpolating them in 3D and projecting (the seed's
+/// Interpolating attributes with `βᵢ` equals interpolating them in 3D and projecting (Buss's
 /// hyperbolic interpolation). Works for any number of vertices: 2 for a line, 3 for a triangle.
 ///
 /// When all `wᵢ` are equal the projection is affine: screen weights that sum to exactly 1 (in

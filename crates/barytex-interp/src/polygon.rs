@@ -1,8 +1,9 @@
 //! Generalized barycentric coordinates over convex polygons (Wachspress, mean value).
 //!
 //! Splitting a quad or pentagon into triangles and interpolating per triangle makes the result
-//! depend on the split (seed 004: "the result depends on the orientation of the polygon when it
-//! is not a triangle"). Generalized barycentric coordinates give every vertex one smooth weight
+//! depend on the split: interpolated shading of a polygon that is not a triangle depends on the
+//! polygon's orientation on screen (Foley, van Dam, Feiner and Hughes, *Computer Graphics:
+//! Principles and Practice*, 2nd ed., 1990, "Problems with interpolated shading"). Generalized barycentric coordinates give every vertex one smooth weight
 //! over the whole polygon instead: the weights are non-negative inside, sum to one, reproduce
 //! the point (`Σ λᵢ·vᵢ = p`, linear precision), equal the ordinary barycentric coordinates on a
 //! triangle, are linear along each edge and do not depend on where the vertex list starts.

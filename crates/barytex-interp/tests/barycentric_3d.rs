@@ -65,7 +65,7 @@ proptest! {
         check(p, tri).map_err(TestCaseError::fail)?;
     }
 
-    /// The seed's precomputed form and the f32 cross form agree with the default on
+    /// Buss's precomputed form and the f32 cross form agree with the default on
     /// well-shaped triangles (they differ only in how error grows on slivers).
     #[test]
     fn methods_agree_on_well_shaped(tri in well_shaped_3d(), t in (0.0f32..1.0, 0.0f32..1.0)) {

@@ -1,4 +1,4 @@
-//! Affine and convex combinations (seed 000, Definition 2 and Theorem 3) and homogeneous
+//! Affine and convex combinations (Denisjuk, Definition 2 and Theorem 3) and homogeneous
 //! coordinates.
 #![allow(clippy::unwrap_used, missing_docs)]
 
@@ -49,7 +49,7 @@ proptest! {
         }
     }
 
-    /// Seed 000: convex combinations of homogeneous coordinates (x : w), w > 0, are homogeneous
+    /// Buss 2003, ch. IV: convex combinations of homogeneous coordinates (x : w), w > 0, are homogeneous
     /// coordinates of a point of the convex hull — the segment here, with the weights
     /// αᵢwᵢ/Σαⱼwⱼ.
     #[test]

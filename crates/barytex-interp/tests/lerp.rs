@@ -72,7 +72,7 @@ proptest! {
         prop_assert!(ulps_between_f32(got, nearest) <= 1, "{got} vs {nearest}");
     }
 
-    /// Seed 000's projection formula inverts `lerp` on the segment, within 1 ulp of exact.
+    /// The projection formula (Buss 2003, ch. IV) inverts `lerp` on the segment, within 1 ulp of exact.
     #[test]
     fn segment_parameter_matches_exact(x1 in vec2_in(-100.0, 100.0), x2 in vec2_in(-100.0, 100.0), u in vec2_in(-300.0, 300.0)) {
         prop_assume!(x1 != x2);
@@ -144,7 +144,7 @@ fn special_values_never_panic() {
 }
 
 #[test]
-fn seed_projection_example() {
+fn projection_example() {
     // u − x1 = α(x2 − x1) on the line, and the foot of the perpendicular off it.
     let x1 = Vec2::new(1.0, 1.0);
     let x2 = Vec2::new(5.0, 3.0);

@@ -85,7 +85,7 @@ proptest! {
 }
 
 #[test]
-fn seed_004_formula_on_a_line() {
+fn formula_on_a_line() {
     // Half-way on screen between depths 1 and 3 is a quarter of the way in 3D.
     assert_eq!(
         perspective_correct_weights([0.5, 0.5], [1.0, 3.0]),

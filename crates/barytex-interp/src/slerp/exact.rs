@@ -1,8 +1,8 @@
-//! Exact SLERP of unit vectors and unit quaternions (seed 003:
+//! Exact SLERP of unit vectors and unit quaternions (Shoemake 1985; Buss 2003, ch. IV:
 //! `n(t) = (sin(θ(1−t))·n₀ + sin(θt)·n₁) / sin θ`), written so that it is accurate for every
 //! angle, including 0 and π, and for every `t`.
 //!
-//! The seed's two-sine formula cancels catastrophically near θ = π (both weights blow up) and
+//! The textbook two-sine formula cancels catastrophically near θ = π (both weights blow up) and
 //! needs a special case at θ = 0. The same curve written in the orthonormal frame of the arc,
 //! `n(t) = cos(tθ)·a + sin(tθ)·e`, with `e` the unit vector along `p = b − (a·b)·a`, has neither
 //! problem, provided `p` is computed without cancellation: `p = n − ((a·n)/(a·a))·a` with

@@ -67,7 +67,8 @@ pub fn nlerp_quat(a: Quat, b: Quat, t: f32) -> Quat {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum NlerpCorrection {
     /// `k(d)` quadratic: `t' = t + t(t − ½)(t − 1)·k(d)`; the 4D angle to the exact SLERP is
-    /// within [`QuatInterpolation::NlerpCorrectedFast`](super::QuatInterpolation::NlerpCorrectedFast)'s bound.
+    /// within the bound of
+    /// [`QuatInterpolation::NlerpCorrectedFast`](super::QuatInterpolation::NlerpCorrectedFast).
     Fast,
     /// `k(t, d) = A(d)·(t − ½)² + B(d)` with `A` cubic and `B` quadratic in `d`; within
     /// [`QuatInterpolation::NlerpCorrected`](super::QuatInterpolation::NlerpCorrected)'s bound.
@@ -93,8 +94,8 @@ pub(crate) fn corrected_t(t: f32, d: f32, correction: NlerpCorrection) -> f32 {
 /// multiply-adds.
 ///
 /// [`NlerpCorrection::Fast`] uses his quadratic fit `k(d)`, [`NlerpCorrection::Precise`] the fit
-/// that also depends on `t`. Both are fitted for `t` in `[0, 1]`; outside it the result still lies on the arc, with a
-/// larger speed error.
+/// that also depends on `t`. Both are fitted for `t` in `[0, 1]`; outside it the result still
+/// lies on the arc, with a larger speed error.
 ///
 /// # Special values
 /// Unit inputs are assumed (not checked); a non-finite input gives the zero quaternion. Never NaN.

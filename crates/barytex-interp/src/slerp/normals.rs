@@ -1,8 +1,9 @@
-//! Interpolating normals for Phong shading (seed 003): lerp and renormalize, or SLERP.
+//! Interpolating normals for Phong shading (Phong 1975): lerp and renormalize, or SLERP.
 //!
 //! Renormalized lerp stays on the great-circle arc but does not move along it at constant speed:
 //! at angle θ between the normals it reaches `atan2(t·sin θ, 1 − t + t·cos θ)` instead of `t·θ`
-//! (the seed's "does not produce even spacing"). [`renormalize_spacing_error`] gives that error;
+//! (it "does not produce even spacing", in Schaefer's shading lecture; Shoemake 1985 for the
+//! constant-speed alternative). [`renormalize_spacing_error`] gives that error;
 //! for the small angles between the vertex normals of a finely tessellated mesh it is tiny, for a
 //! coarse mesh it is not.
 
