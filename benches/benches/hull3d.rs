@@ -95,7 +95,7 @@ fn bench_orient3d(c: &mut Criterion) {
         group.bench_function(format!("barytex_orient3d/{set}"), |b| {
             b.iter(|| {
                 for &[p, q, r, s] in quads {
-                    black_box(orient3d(p, q, r, s));
+                    let _ = black_box(orient3d(p, q, r, s));
                 }
             });
         });

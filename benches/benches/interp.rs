@@ -158,7 +158,7 @@ fn bench_orient2d(c: &mut Criterion) {
         group.bench_function(format!("barytex_orient2d/{set}"), |b| {
             b.iter(|| {
                 for &(p, q, r) in black_box(&inputs[..]) {
-                    black_box(orient2d(p, q, r));
+                    let _ = black_box(orient2d(p, q, r));
                 }
             });
         });
@@ -353,7 +353,7 @@ fn bench_perspective(c: &mut Criterion) {
     group.bench_function("barytex_perspective_correct_weights", |b| {
         b.iter(|| {
             for &(screen, w) in black_box(&inputs[..]) {
-                black_box(perspective_correct_weights(screen, w));
+                let _ = black_box(perspective_correct_weights(screen, w));
             }
         });
     });

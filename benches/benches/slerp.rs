@@ -9,9 +9,7 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use barytex_interp::{
-    NormalInterpolation, QuatInterpolation, QuatPath, interpolate_normal, slerp_quat, slerp_vec3,
-};
+use barytex_interp::{NormalInterpolation, QuatInterpolation, interpolate_normal, slerp};
 use barytex_testkit::seeded::XorShift;
 use barytex_testkit::sphere;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
@@ -50,10 +48,10 @@ fn bench_quat_slerp(c: &mut Criterion) {
             });
         });
     }
-    group.bench_function("barytex_slerp_quat_direct_call", |bench| {
+    group.bench_function("barytex_slerp_direct_call", |bench| {
         bench.iter(|| {
             for &(a, b, t) in black_box(&pairs[..]) {
-                black_box(slerp_quat(a, b, t, QuatPath::Shortest));
+                black_box(slerp(a, b, t));
             }
         });
     });
@@ -103,10 +101,10 @@ fn bench_vec3_slerp(c: &mut Criterion) {
         .collect();
     let mut group = c.benchmark_group("vec3_slerp");
     group.throughput(Throughput::Elements(BATCH as u64));
-    group.bench_function("barytex_slerp_vec3", |bench| {
+    group.bench_function("barytex_slerp", |bench| {
         bench.iter(|| {
             for &(a, b, t) in black_box(&pairs[..]) {
-                black_box(slerp_vec3(a, b, t));
+                black_box(slerp(a, b, t));
             }
         });
     });

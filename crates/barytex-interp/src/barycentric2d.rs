@@ -1,13 +1,25 @@
-//! 2D barycentric coordinates with exact classification (seed 000, Theorems 4, 5 and 8).
+//! 2D barycentric coordinates with exact classification (Buss 2003, ch. IV, barycentric
+//! coordinates; Denisjuk, Theorems 4, 5 and 8).
 
 use glam::Vec2;
 
-use crate::InterpError;
 use crate::orient::orient2d_value;
+use crate::{InterpError, Interpolate, interpolate3};
 
 /// Where a point lies relative to a triangle, decided exactly.
 ///
 /// Edge `i` is the edge opposite vertex `i` (the one where weight `i` is zero).
+///
+/// ```
+/// use barytex_interp::{locate_2d, Location};
+/// use glam::Vec2;
+/// let tri = [Vec2::ZERO, Vec2::new(4.0, 0.0), Vec2::new(0.0, 4.0)];
+/// let on_vertex = locate_2d(Vec2::new(4.0, 0.0), tri)?;
+/// assert_eq!(on_vertex, Location::OnVertex(1));
+/// assert!(on_vertex.is_inside_closed());
+/// assert!(!locate_2d(Vec2::new(-1.0, 0.0), tri)?.is_inside_closed());
+/// # Ok::<(), barytex_interp::InterpError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Location {
     /// Strictly inside: all three weights positive.
@@ -31,17 +43,45 @@ impl Location {
     }
 }
 
-/// Barycentric coordinates `(α, β, γ)` of a point and its exact location.
+/// Barycentric coordinates `(α, β, γ)` of a point in a 2D triangle and its exact location: the
+/// result of [`barycentric_2d`] (its 3D twin is [`Barycentric3d`](crate::Barycentric3d)).
 ///
 /// `p = α·a + β·b + γ·c` with `α + β + γ = 1`; weight `i` is the signed area of the sub-triangle
-/// opposite vertex `i` over the triangle's area (the seed's `α = A/(A + B + C)`).
+/// opposite vertex `i` over the triangle's area, `α = A/(A + B + C)` (Buss, *3D Computer
+/// Graphics*, 2003, §IV.1.3).
+///
+/// ```
+/// use barytex_interp::{barycentric_2d, Location};
+/// use glam::{Vec2, Vec3};
+///
+/// let tri = [Vec2::ZERO, Vec2::new(4.0, 0.0), Vec2::new(0.0, 4.0)];
+/// let b = barycentric_2d(Vec2::new(1.0, 2.0), tri)?;
+/// assert_eq!(b.weights, [0.25, 0.25, 0.5]);
+/// assert_eq!(b.location, Location::Inside);
+/// // Interpolate per-vertex colours at the point.
+/// assert_eq!(b.interpolate([Vec3::X, Vec3::Y, Vec3::Z]), Vec3::new(0.25, 0.25, 0.5));
+/// # Ok::<(), barytex_interp::InterpError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Barycentric {
+pub struct Barycentric2d {
     /// `[α, β, γ]`, the weights of vertices `a`, `b`, `c`.
     pub weights: [f32; 3],
     /// Where the point is, decided with exact predicates; consistent with the signs of `weights`
     /// except where a weight's magnitude is below f32's range (it then reads `0.0`).
     pub location: Location,
+}
+
+impl Barycentric2d {
+    /// `Σ wᵢ·vᵢ`: the value at the point from per-vertex values ([`interpolate3`] with
+    /// [`weights`](Self::weights)).
+    ///
+    /// # Accuracy
+    /// As [`Interpolate::combine3`]: exact at a vertex (weights `eᵢ` return `values[i]`).
+    #[must_use]
+    #[inline]
+    pub fn interpolate<T: Interpolate>(&self, values: [T; 3]) -> T {
+        interpolate3(values, self.weights)
+    }
 }
 
 /// The signed sub-areas `[d_a, d_b, d_c]` and the total `d`, each with an exact sign.
@@ -116,7 +156,7 @@ pub fn locate_2d(p: Vec2, tri: [Vec2; 3]) -> Result<Location, InterpError> {
 /// ```
 /// use barytex_interp::{barycentric_2d, Location};
 /// use glam::Vec2;
-/// // Seed 000, Example 7: x = (0,0), y = (2,3), z = (3,1).
+/// // Denisjuk, Example 7: x = (0,0), y = (2,3), z = (3,1).
 /// let tri = [Vec2::new(0.0, 0.0), Vec2::new(2.0, 3.0), Vec2::new(3.0, 1.0)];
 /// let b = barycentric_2d(Vec2::new(1.0, 0.0), tri)?;
 /// assert_eq!(b.location, Location::Outside);
@@ -125,13 +165,13 @@ pub fn locate_2d(p: Vec2, tri: [Vec2; 3]) -> Result<Location, InterpError> {
 /// # Ok::<(), barytex_interp::InterpError>(())
 /// ```
 #[inline]
-pub fn barycentric_2d(p: Vec2, tri: [Vec2; 3]) -> Result<Barycentric, InterpError> {
+pub fn barycentric_2d(p: Vec2, tri: [Vec2; 3]) -> Result<Barycentric2d, InterpError> {
     let (sub, total) = signed_areas(p, tri).ok_or(non_finite(p))?;
     let location = classify(sub, total);
     if location == Location::Degenerate {
         return Err(InterpError::DegenerateTriangle);
     }
-    Ok(Barycentric {
+    Ok(Barycentric2d {
         // `0.0 / negative` would be `-0.0`: zero weights are written as `+0.0`.
         weights: sub.map(|d| if d == 0.0 { 0.0 } else { (d / total) as f32 }),
         location,
@@ -156,7 +196,7 @@ pub(crate) mod methods {
         dop + err
     }
 
-    /// The seed's formula in plain f32: `β = (z−x)×(u−x) / (z−x)×(y−x)`,
+    /// The textbook formula (Denisjuk, Theorem 8) in plain f32: `β = (z−x)×(u−x) / (z−x)×(y−x)`,
     /// `γ = (u−x)×(y−x) / (z−x)×(y−x)`, `α = 1 − β − γ`.
     ///
     /// # Accuracy

@@ -1,10 +1,49 @@
-//! 3D barycentric coordinates (seed 000, "Obliczenie barycentrycznych współrzędnych w R³").
+//! 3D barycentric coordinates (Buss 2003, ch. IV, barycentric coordinates in R³).
 
 use glam::{DVec3, Vec3, Vec3Swizzles};
 
-use crate::InterpError;
+use crate::{InterpError, Interpolate, interpolate3};
 
-/// Barycentric coordinates `[α, β, γ]` of `p` with respect to the triangle `tri = [a, b, c]` in
+/// Barycentric coordinates `(α, β, γ)` of a point with respect to a 3D triangle: the result of
+/// [`barycentric_3d`] (the 2D twin, with an exact location, is
+/// [`Barycentric2d`](crate::Barycentric2d)).
+///
+/// `p′ = α·a + β·b + γ·c` with `α + β + γ = 1`, where `p′` is the orthogonal projection of the
+/// point onto the triangle's plane.
+///
+/// ```
+/// use barytex_interp::barycentric_3d;
+/// use glam::{Vec2, Vec3};
+///
+/// let tri = [Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 2.0, 0.0)];
+/// // 5 above the plane z = 0: the weights are those of (1, 0.5, 0).
+/// let b = barycentric_3d(Vec3::new(1.0, 0.5, 5.0), tri)?;
+/// assert_eq!(b.weights, [0.25, 0.5, 0.25]);
+/// // Interpolate per-vertex texture coordinates at the point.
+/// let uv = b.interpolate([Vec2::ZERO, Vec2::X, Vec2::Y]);
+/// assert_eq!(uv, Vec2::new(0.5, 0.25));
+/// # Ok::<(), barytex_interp::InterpError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Barycentric3d {
+    /// `[α, β, γ]`, the weights of vertices `a`, `b`, `c`.
+    pub weights: [f32; 3],
+}
+
+impl Barycentric3d {
+    /// `Σ wᵢ·vᵢ`: the value at the point from per-vertex values ([`interpolate3`] with
+    /// [`weights`](Self::weights)).
+    ///
+    /// # Accuracy
+    /// As [`Interpolate::combine3`]: exact at a vertex (weights `eᵢ` return `values[i]`).
+    #[must_use]
+    #[inline]
+    pub fn interpolate<T: Interpolate>(&self, values: [T; 3]) -> T {
+        interpolate3(values, self.weights)
+    }
+}
+
+/// Barycentric coordinates `(α, β, γ)` of `p` with respect to the triangle `tri = [a, b, c]` in
 /// 3D, by the cross-product form in f64.
 ///
 /// A point off the triangle's plane is projected orthogonally onto it first (the weights are
@@ -26,11 +65,11 @@ use crate::InterpError;
 /// use barytex_interp::barycentric_3d;
 /// use glam::Vec3;
 /// let tri = [Vec3::X, Vec3::Y, Vec3::Z];
-/// let w = barycentric_3d(Vec3::splat(1.0 / 3.0), tri)?;
-/// assert!(w.iter().all(|&wi| (wi - 1.0 / 3.0).abs() < 1e-7));
+/// let b = barycentric_3d(Vec3::splat(1.0 / 3.0), tri)?;
+/// assert!(b.weights.iter().all(|&wi| (wi - 1.0 / 3.0).abs() < 1e-7));
 /// # Ok::<(), barytex_interp::InterpError>(())
 /// ```
-pub fn barycentric_3d(p: Vec3, tri: [Vec3; 3]) -> Result<[f32; 3], InterpError> {
+pub fn barycentric_3d(p: Vec3, tri: [Vec3; 3]) -> Result<Barycentric3d, InterpError> {
     if !p.is_finite() {
         return Err(InterpError::NonFinite { what: "point" });
     }
@@ -54,7 +93,9 @@ pub fn barycentric_3d(p: Vec3, tri: [Vec3; 3]) -> Result<[f32; 3], InterpError> 
         return Err(InterpError::DegenerateTriangle);
     }
     let area = |q: DVec3, r: DVec3| (q - p).cross(r - p).dot(n) / nn;
-    Ok([area(b, c) as f32, area(c, a) as f32, area(a, b) as f32])
+    Ok(Barycentric3d {
+        weights: [area(b, c) as f32, area(c, a) as f32, area(a, b) as f32],
+    })
 }
 
 pub(crate) mod methods {
@@ -101,7 +142,7 @@ pub(crate) mod methods {
         [1.0 - beta - gamma, beta, gamma]
     }
 
-    /// The seed's precomputed form: per triangle
+    /// Buss's precomputed form (2003, ch. IV): per triangle
     /// `u_β = (e₂²e₁ − (e₁·e₂)e₂)/(e₁²e₂² − (e₁·e₂)²)` and `u_γ` likewise, then per point
     /// `β = u_β·f`, `γ = u_γ·f` with `f = p − a`: two dot products per query.
     ///

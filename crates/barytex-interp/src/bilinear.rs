@@ -1,11 +1,11 @@
-//! Bilinear interpolation over a quad (seed 000, "Interpolacja biliniowa").
+//! Bilinear interpolation over a quad (Buss 2003, ch. IV, bilinear interpolation).
 
 use crate::Interpolate;
 
 /// Bilinear interpolation of the corner values `[x, y, z, w]` of a quad at `(α, β)`:
 /// `(1−α)(1−β)x + α(1−β)y + αβz + (1−α)βw`.
 ///
-/// Corner order follows the seed: `x` at `(0, 0)`, `y` at `(1, 0)`, `z` at `(1, 1)`, `w` at
+/// Corner order follows Buss and Denisjuk: `x` at `(0, 0)`, `y` at `(1, 0)`, `z` at `(1, 1)`, `w` at
 /// `(0, 1)`, i.e. around the quad. Evaluated as two lerps along α then one along β, so the
 /// corners are reproduced exactly and constant values stay constant.
 ///
@@ -16,7 +16,7 @@ use crate::Interpolate;
 /// ```
 /// use barytex_interp::bilinear;
 /// use glam::Vec2;
-/// // Seed 000, Example 10.
+/// // Denisjuk, Example 10.
 /// let quad = [Vec2::new(0.0, 0.0), Vec2::new(4.0, 0.0), Vec2::new(5.0, 3.0), Vec2::new(0.0, 2.0)];
 /// assert_eq!(bilinear(quad, 1.0, 0.0), Vec2::new(4.0, 0.0));
 /// assert_eq!(bilinear(quad, 0.5, 0.25), Vec2::new(17.0 / 8.0, 5.0 / 8.0));

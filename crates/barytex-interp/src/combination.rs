@@ -1,4 +1,5 @@
-//! Affine and convex combinations as checked types (seed 000, Definition 2).
+//! Affine and convex combinations as checked types (Denisjuk, Definition 2; Buss 2003, ch. IV,
+//! weighted averages and affine combinations).
 
 use crate::{InterpError, Interpolate};
 
@@ -40,7 +41,7 @@ fn normalize<const N: usize>(weights: [f32; N]) -> Result<[f32; N], InterpError>
 }
 
 /// Weights `α₁ … α_N` with `Σαᵢ = 1`: an affine combination `Σαᵢxᵢ`, which affine maps preserve
-/// (seed 000, Theorem 3).
+/// (Denisjuk, Theorem 3).
 ///
 /// ```
 /// use barytex_interp::AffineCombination;

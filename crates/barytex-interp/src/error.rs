@@ -4,16 +4,33 @@ use core::fmt;
 
 /// Why an interpolation could not be computed.
 ///
-/// Every fallible function of the crate returns this type; the variants carry enough context to
-/// say which input was wrong.
+/// Every function of the interpolation core that can reject its input returns
+/// `Result<_, InterpError>` (the crate's error convention, see the crate docs); the variants carry
+/// enough context to say which input was wrong.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum InterpError {
     /// An input coordinate, weight or `w` was NaN or infinite.
     NonFinite {
-        /// Which input: `"point"`, `"triangle"`, `"quad"`, `"weights"`, …
+        /// Which input: `"point"`, `"triangle"`, `"quad"`, `"weights"`, or a parameter's name
+        /// (`"a"`, `"b"`, `"t"`, …) where the function's inputs are named points.
         what: &'static str,
     },
+    /// A vector or quaternion that must give a direction has zero length.
+    ZeroLength {
+        /// Which input: `"a"` or `"b"`.
+        what: &'static str,
+    },
+    /// A homogeneous `w` is zero or negative (a vertex at or behind the eye: clip first).
+    NonPositiveW {
+        /// Position of the `w`.
+        index: usize,
+        /// Its value.
+        w: f32,
+    },
+    /// The result is a point at infinity: perspective-correct weights whose denominator
+    /// `Σ αⱼ/wⱼ` is zero (the screen point lies on the vanishing line of the primitive).
+    AtInfinity,
     /// The triangle has zero area (its vertices are exactly collinear), so barycentric
     /// coordinates do not exist.
     DegenerateTriangle,
@@ -40,6 +57,11 @@ impl fmt::Display for InterpError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::NonFinite { what } => write!(f, "{what} has a NaN or infinite component"),
+            Self::ZeroLength { what } => write!(f, "{what} has zero length, so no direction"),
+            Self::NonPositiveW { index, w } => {
+                write!(f, "w {index} is {w}, not positive (behind the eye)")
+            }
+            Self::AtInfinity => f.write_str("the result is a point at infinity"),
             Self::DegenerateTriangle => {
                 f.write_str("triangle has zero area (its vertices are collinear)")
             }

@@ -1,4 +1,5 @@
-//! Homogeneous coordinates `(x : w)` (seed 000).
+//! Homogeneous coordinates `(x : w)` (Buss 2003, ch. IV, interpolation and homogeneous
+//! coordinates).
 
 use glam::{Vec3, Vec4};
 
@@ -7,7 +8,8 @@ use crate::Interpolate;
 /// A point in homogeneous coordinates `(xyz : w)`, standing for `xyz / w` when `w ≠ 0`.
 ///
 /// Convex combinations of homogeneous points with `w > 0` are homogeneous coordinates of a point
-/// in the convex hull of the points they stand for (seed 000): weights `αᵢ` on the homogeneous
+/// in the convex hull of the points they stand for (Buss 2003, ch. IV; Denisjuk, convex combinations
+/// of homogeneous coordinates): weights `αᵢ` on the homogeneous
 /// points become the weights `αᵢwᵢ / Σαⱼwⱼ` on the points themselves. (Perspective correction is
 /// the inverse direction: screen weights `αᵢ` become `(αᵢ/wᵢ) / Σ(αⱼ/wⱼ)`; see
 /// [`perspective_correct_weights`].)
@@ -66,6 +68,15 @@ impl Homogeneous3 {
     ///
     /// # Accuracy
     /// One division per component: correctly rounded.
+    ///
+    /// ```
+    /// use barytex_interp::Homogeneous3;
+    /// use glam::Vec3;
+    /// let p = Homogeneous3::new(Vec3::new(2.0, 4.0, 6.0), 2.0).to_point();
+    /// assert_eq!(p, Some(Vec3::new(1.0, 2.0, 3.0)));
+    /// // A direction: the point at infinity along +x.
+    /// assert_eq!(Homogeneous3::new(Vec3::X, 0.0).to_point(), None);
+    /// ```
     #[must_use]
     pub fn to_point(self) -> Option<Vec3> {
         if self.w == 0.0 {

@@ -1,5 +1,6 @@
-//! The 2D convex hull with exact orientation (seed 003: "every point of the set is a convex
-//! combination of the hull's vertices").
+//! The 2D convex hull with exact orientation (Buss 2003, ch. IV; Denisjuk, Theorem 15: the convex
+//! hull of a set is the set of all convex combinations of its points, so every point is a convex
+//! combination of the hull's vertices).
 //!
 //! Pipeline: one pass rejects non-finite points and finds the extreme points in eight directions;
 //! an Akl–Toussaint prefilter drops every point strictly inside their polygon (most of a uniform

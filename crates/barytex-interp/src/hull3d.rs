@@ -301,7 +301,7 @@ fn project(p: Vec3, axis: usize) -> Vec2 {
 /// 2D orientations.
 fn collinear(a: Vec3, b: Vec3, p: Vec3) -> bool {
     (0..3).all(|k| {
-        orient2d(project(a, k), project(b, k), project(p, k)) == Some(Orientation::Collinear)
+        orient2d(project(a, k), project(b, k), project(p, k)) == Ok(Orientation::Collinear)
     })
 }
 
@@ -348,7 +348,7 @@ fn planar_hull(points: &[Vec3], subset: &[u32], [a, b, c]: [Vec3; 3]) -> ConvexH
     sorted.dedup_by(|later, earlier| proj(*later) == proj(*earlier));
     let left_turn = |h: &[u32], p: u32| {
         let n = h.len();
-        orient2d(proj(h[n - 2]), proj(h[n - 1]), proj(p)) == Some(Orientation::CounterClockwise)
+        orient2d(proj(h[n - 2]), proj(h[n - 1]), proj(p)) == Ok(Orientation::CounterClockwise)
     };
     let mut hull: Vec<u32> = Vec::with_capacity(sorted.len() + 1);
     for &p in &sorted {
@@ -745,8 +745,8 @@ fn validate_polygon(points: &[Vec3], vertices: &[usize], axis: usize) -> Result<
         let (a, b, c) = (vertices[k], vertices[(k + 1) % n], vertices[(k + 2) % n]);
         // Strictly convex turns, and a fan from the first corner that turns the same way (so the
         // polygon winds once).
-        let fan = k + 2 >= n || ccw(vertices[0], b, c) == Some(Orientation::CounterClockwise);
-        if ccw(a, b, c) != Some(Orientation::CounterClockwise) || !fan {
+        let fan = k + 2 >= n || ccw(vertices[0], b, c) == Ok(Orientation::CounterClockwise);
+        if ccw(a, b, c) != Ok(Orientation::CounterClockwise) || !fan {
             return Err(HullDefect3d::DegenerateFacet { facet: [a, b, c] });
         }
     }
@@ -760,7 +760,7 @@ fn validate_polygon(points: &[Vec3], vertices: &[usize], axis: usize) -> Result<
         }
         for k in 0..n {
             let (u, w) = (vertices[k], vertices[(k + 1) % n]);
-            if ccw(u, w, i) == Some(Orientation::Clockwise) {
+            if ccw(u, w, i) == Ok(Orientation::Clockwise) {
                 return Err(HullDefect3d::PointOutside {
                     point: i,
                     facet: [u, w, w],

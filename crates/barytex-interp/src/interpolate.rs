@@ -22,6 +22,20 @@ use crate::lerp::{lerp, lerp_f64};
 ///    normalised, so screen-space derivatives (`∂w/∂x` sums to 0) use the same code; for equal
 ///    values it is 0 within the same bound.
 /// 5. **Linearity**: `a.scale(s).add(b.scale(t))` is computed component by component.
+///
+/// ```
+/// use barytex_interp::Interpolate;
+/// use glam::Vec2;
+///
+/// // A varying made of texture coordinates and a colour, interpolated as one value.
+/// let a = (Vec2::ZERO, [1.0f32, 0.0, 0.0]);
+/// let b = (Vec2::ONE, [0.0f32, 0.0, 1.0]);
+/// assert_eq!(a.lerp(b, 0.0), a);
+/// assert_eq!(a.lerp(b, 0.5), (Vec2::splat(0.5), [0.5, 0.0, 0.5]));
+/// // Weights that sum to 0: a difference, as in a screen-space derivative.
+/// let d = <f32 as Interpolate>::combine([(1.0, 1.0), (3.0, -1.0)]);
+/// assert_eq!(d, Some(-2.0));
+/// ```
 pub trait Interpolate: Copy {
     /// Multiply every component by `w`.
     #[must_use]

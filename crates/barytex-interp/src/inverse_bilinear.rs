@@ -1,9 +1,10 @@
-//! Inverse bilinear interpolation: point → `(α, β)` (seed 000, "Odwrócenie na płaszczyźnie").
+//! Inverse bilinear interpolation: point → `(α, β)` (Buss 2003, ch. IV, inverting bilinear
+//! interpolation).
 //!
 //! For a fixed `β` the point lies on the segment `s₁(β) s₂(β)` with `s₁ = (1−β)x + βw` and
 //! `s₂ = (1−β)y + βz`; requiring `(s₁ − u) × (s₂ − u) = 0` gives `Aβ² + Bβ + C = 0` with
 //! `A = (w − x) × (z − y)`, `B = (z − y) × (u − x) − (w − x) × (u − y)`,
-//! `C = (u − x) × (u − y)`. (The seed prints `A = (w − u) × (z − y)`; expanding the cross product
+//! `C = (u − x) × (u − y)`. (Denisjuk's restatement prints `A = (w − u) × (z − y)`; expanding the cross product
 //! shows it is `w − x`.) The roots are taken cancellation-free as `q/A` and `C/q` with
 //! `q = −½(B + sign(B)·√(B² − 4AC))`, so a parallelogram (`A = 0`) needs no threshold: its root is
 //! `C/q = −C/B`. Then `α` is the projection of `u` onto `s₁s₂`.
@@ -18,7 +19,7 @@ pub enum InverseBilinear {
     /// Exactly one preimage in `[0, 1]²` — the usual answer for a point in a convex quad.
     Inside(Vec2),
     /// Two distinct preimages in `[0, 1]²`: the quad is non-convex or self-intersecting, so the
-    /// map folds over (the seed's Figure IV.13). The first has the smaller `β`.
+    /// map folds over (Buss 2003, Figure IV.13). The first has the smaller `β`.
     Folded(Vec2, Vec2),
     /// No preimage in `[0, 1]²`. Holds the real preimage nearest to the unit square (in the max
     /// norm), or `None` when the point has no real preimage at all.
@@ -26,7 +27,19 @@ pub enum InverseBilinear {
 }
 
 impl InverseBilinear {
-    /// The preimage inside `[0, 1]²` (the first one for a folded quad), if any.
+    /// The preimage inside `[0, 1]²` (the first one for a folded quad), if any: `None` is a
+    /// legitimate answer (the point lies outside the quad), not an error.
+    ///
+    /// ```
+    /// use barytex_interp::inverse_bilinear_2d;
+    /// use glam::Vec2;
+    ///
+    /// let square = [Vec2::ZERO, Vec2::X, Vec2::ONE, Vec2::Y];
+    /// let centre = inverse_bilinear_2d(Vec2::splat(0.5), square)?;
+    /// assert_eq!(centre.inside(), Some(Vec2::splat(0.5)));
+    /// assert_eq!(inverse_bilinear_2d(Vec2::splat(2.0), square)?.inside(), None);
+    /// # Ok::<(), barytex_interp::InterpError>(())
+    /// ```
     #[must_use]
     pub fn inside(self) -> Option<Vec2> {
         match self {
@@ -69,7 +82,7 @@ const INSIDE_SLACK: f64 = 1.0 / (1u64 << 27) as f64;
 /// ```
 /// use barytex_interp::{inverse_bilinear_2d, InverseBilinear};
 /// use glam::Vec2;
-/// // Seed 000, Example 10: (α, β) = (1/2, 1/4) maps to (17/8, 5/8).
+/// // Denisjuk, Example 10: (α, β) = (1/2, 1/4) maps to (17/8, 5/8).
 /// let quad = [Vec2::new(0.0, 0.0), Vec2::new(4.0, 0.0), Vec2::new(5.0, 3.0), Vec2::new(0.0, 2.0)];
 /// let ab = inverse_bilinear_2d(Vec2::new(17.0 / 8.0, 5.0 / 8.0), quad)?.inside().unwrap();
 /// assert!((ab - Vec2::new(0.5, 0.25)).length() < 1e-7);
@@ -110,9 +123,9 @@ pub fn inverse_bilinear_2d(p: Vec2, quad: [Vec2; 4]) -> Result<InverseBilinear, 
 ///
 /// The corners and the point are projected onto a plane where the quad is convex, then solved as
 /// [`inverse_bilinear_2d`]. For a planar quad (or a nearly planar one) that plane is the one
-/// spanned by the diagonals; when that projection is not convex, the seed's choice is used: the
+/// spanned by the diagonals; when that projection is not convex, Buss's choice is used: the
 /// plane perpendicular to the line joining the midpoints of the diagonals, on which the
-/// projection of a non-planar quad is always convex (seed 000, Corollary 12), so the inverse is
+/// projection of a non-planar quad is always convex (Denisjuk, Corollary 12), so the inverse is
 /// exact for every point on the bilinear surface. A point off the surface gets the preimage of its
 /// projection.
 ///
@@ -123,6 +136,21 @@ pub fn inverse_bilinear_2d(p: Vec2, quad: [Vec2; 4]) -> Result<InverseBilinear, 
 /// # Accuracy
 /// As [`inverse_bilinear_2d`] for points on the surface (test
 /// `inverse_bilinear_3d_round_trip_non_planar`).
+///
+/// ```
+/// use barytex_interp::{bilinear, inverse_bilinear_3d, InverseBilinear};
+/// use glam::{Vec2, Vec3};
+///
+/// // A saddle: the corner z is lifted out of the plane of the other three.
+/// let quad = [Vec3::ZERO, Vec3::X, Vec3::new(1.0, 1.0, 1.0), Vec3::Y];
+/// let p = bilinear(quad, 0.25, 0.75); // (α, β) = (¼, ¾)
+/// let InverseBilinear::Inside(ab) = inverse_bilinear_3d(p, quad)? else { panic!() };
+/// assert!((ab - Vec2::new(0.25, 0.75)).abs().max_element() < 1e-6);
+/// // A point past the edge α = 1 has no preimage in the unit square.
+/// let outside = inverse_bilinear_3d(Vec3::new(1.5, 0.5, 0.0), quad)?;
+/// assert_eq!(outside.inside(), None);
+/// # Ok::<(), barytex_interp::InterpError>(())
+/// ```
 pub fn inverse_bilinear_3d(p: Vec3, quad: [Vec3; 4]) -> Result<InverseBilinear, InterpError> {
     if !p.is_finite() {
         return Err(InterpError::NonFinite { what: "point" });
@@ -147,7 +175,7 @@ pub fn inverse_bilinear_3d(p: Vec3, quad: [Vec3; 4]) -> Result<InverseBilinear, 
         );
         Some((result, is_strictly_convex(projected)))
     };
-    // The diagonals' plane first (it is the quad's own plane when the quad is planar); the seed's
+    // The diagonals' plane first (it is the quad's own plane when the quad is planar); Buss's
     // plane only when that projection folds. A planar quad that folds is answered in its own
     // plane, like `inverse_bilinear_2d` would.
     let first = solve_in(diagonal_normal);

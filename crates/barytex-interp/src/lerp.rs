@@ -1,4 +1,4 @@
-//! Linear interpolation on a line and its inverse (seed 000: `x(α) = (1−α)x₁ + αx₂`,
+//! Linear interpolation on a line and its inverse (Buss 2003, ch. IV: `x(α) = (1−α)x₁ + αx₂`,
 //! `α = (u−x₁)·(x₂−x₁)/|x₂−x₁|²`).
 
 use glam::{DVec3, Vec2, Vec3};
@@ -41,7 +41,7 @@ exact_lerp!(
     /// - monotonic in `t`;
     /// - bounded: for `t` in `[0, 1]` the result lies between `a` and `b`.
     ///
-    /// `t` outside `[0, 1]` extrapolates along the same line (the seed's α < 0 and α > 1), still
+    /// `t` outside `[0, 1]` extrapolates along the same line (Buss's α < 0 and α > 1), still
     /// monotonic. Built as C++20's `std::lerp` (P0811). glam 0.34 offers `lerp`, `a(1 − t) + bt`,
     /// exact at both ends but neither consistent nor monotonic, and `lerp_monotonic`,
     /// `a + (b − a)t`, which is not exact at `t = 1` (glam #823 is the history).
@@ -77,9 +77,13 @@ exact_lerp!(
 
 /// The parameter `t` with `lerp(a, b, t) == x`: `(x − a)/(b − a)`.
 ///
-/// Returns `None` when `a == b` (every or no `t` would do) or when an input is not finite. A
-/// quotient beyond f32's range is returned as the infinity of its sign.
-/// `inverse_lerp(a, b, a) == Some(0.0)` and `inverse_lerp(a, b, b) == Some(1.0)` exactly.
+/// A quotient beyond f32's range is returned as the infinity of its sign.
+/// `inverse_lerp(a, b, a) == Ok(0.0)` and `inverse_lerp(a, b, b) == Ok(1.0)` exactly.
+///
+/// # Errors
+/// [`InterpError::DegenerateSegment`](crate::InterpError::DegenerateSegment) when `a == b`
+/// (every or no `t` would do), [`InterpError::NonFinite`](crate::InterpError::NonFinite) when an
+/// input is NaN or infinite (`what` is `"a"`, `"b"` or `"x"`).
 ///
 /// # Accuracy
 /// Computed in f64 and rounded once: within 1 ulp of the exact quotient of the f32 inputs when
@@ -87,19 +91,24 @@ exact_lerp!(
 ///
 /// ```
 /// use barytex_interp::inverse_lerp;
-/// assert_eq!(inverse_lerp(2.0, 4.0, 3.0), Some(0.5));
-/// assert_eq!(inverse_lerp(2.0, 2.0, 3.0), None);
+/// use barytex_interp::InterpError;
+/// assert_eq!(inverse_lerp(2.0, 4.0, 3.0), Ok(0.5));
+/// assert_eq!(inverse_lerp(2.0, 2.0, 3.0), Err(InterpError::DegenerateSegment));
 /// ```
-#[must_use]
-pub fn inverse_lerp(a: f32, b: f32, x: f32) -> Option<f32> {
-    if !(a.is_finite() && b.is_finite() && x.is_finite()) || a == b {
-        return None;
+pub fn inverse_lerp(a: f32, b: f32, x: f32) -> Result<f32, crate::InterpError> {
+    for (what, v) in [("a", a), ("b", b), ("x", x)] {
+        if !v.is_finite() {
+            return Err(crate::InterpError::NonFinite { what });
+        }
+    }
+    if a == b {
+        return Err(crate::InterpError::DegenerateSegment);
     }
     let (a, b, x) = (f64::from(a), f64::from(b), f64::from(x));
-    Some(((x - a) / (b - a)) as f32)
+    Ok(((x - a) / (b - a)) as f32)
 }
 
-/// The seed's projection formula: the parameter α of the point on the line through `x1`, `x2`
+/// The projection formula (Buss 2003, ch. IV; Denisjuk, linear interpolation): the parameter α of the point on the line through `x1`, `x2`
 /// nearest to `u`, `α = (u − x1)·(x2 − x1)/|x2 − x1|²`, in 2D.
 ///
 /// For `u` on the segment this inverts `x1.lerp(x2, α)`; `α` is outside `[0, 1]` when the
@@ -139,6 +148,16 @@ pub fn segment_parameter_2d(u: Vec2, x1: Vec2, x2: Vec2) -> Result<f32, crate::I
 ///
 /// # Accuracy
 /// As [`segment_parameter_2d`] (test `segment_parameter_matches_exact`).
+///
+/// ```
+/// use barytex_interp::{segment_parameter_3d, InterpError};
+/// use glam::Vec3;
+/// let a = segment_parameter_3d(Vec3::new(1.0, 5.0, -2.0), Vec3::ZERO, Vec3::new(4.0, 0.0, 0.0))?;
+/// assert_eq!(a, 0.25);
+/// let none = segment_parameter_3d(Vec3::ONE, Vec3::X, Vec3::X);
+/// assert_eq!(none, Err(InterpError::DegenerateSegment));
+/// # Ok::<(), InterpError>(())
+/// ```
 pub fn segment_parameter_3d(u: Vec3, x1: Vec3, x2: Vec3) -> Result<f32, crate::InterpError> {
     check_finite(&[u.x, u.y, u.z, x1.x, x1.y, x1.z, x2.x, x2.y, x2.z])?;
     let d: DVec3 = x2.as_dvec3() - x1.as_dvec3();

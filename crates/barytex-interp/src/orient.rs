@@ -2,11 +2,22 @@
 
 use glam::Vec2;
 
+use crate::InterpError;
+
 /// Which side of the directed line `a → b` the point `c` is on: the sign of the determinant
 /// `(b − a) × (c − a)`.
 ///
 /// "Counter-clockwise" is meant in a y-up frame (mathematics); on a y-down screen the same sign
 /// looks clockwise.
+///
+/// ```
+/// use barytex_interp::{orient2d, Orientation};
+/// use glam::Vec2;
+/// let o = orient2d(Vec2::ZERO, Vec2::X, Vec2::new(0.5, -1.0))?;
+/// assert_eq!(o, Orientation::Clockwise);
+/// assert_eq!(o.sign(), -1);
+/// # Ok::<(), barytex_interp::InterpError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Orientation {
     /// `(b − a) × (c − a) > 0`: `c` is left of `a → b`.
@@ -45,7 +56,9 @@ impl Orientation {
 /// settled by an exact expansion sum of the six f32 × f32 products, each exact in f64. So the
 /// sign is exact for every finite f32 input, huge, tiny and subnormal ones included.
 ///
-/// Returns `None` when an input is NaN or infinite.
+/// # Errors
+/// [`InterpError::NonFinite`] naming the first point (`"a"`, `"b"` or `"c"`) with a NaN or
+/// infinite coordinate.
 ///
 /// # Accuracy
 /// Exact sign for all finite inputs (Kettner's grid: zero wrong signs; tests
@@ -54,14 +67,48 @@ impl Orientation {
 /// ```
 /// use barytex_interp::{orient2d, Orientation};
 /// use glam::Vec2;
-/// let o = orient2d(Vec2::ZERO, Vec2::X, Vec2::Y);
-/// assert_eq!(o, Some(Orientation::CounterClockwise));
+/// assert_eq!(orient2d(Vec2::ZERO, Vec2::X, Vec2::Y)?, Orientation::CounterClockwise);
+/// assert_eq!(orient2d(Vec2::ZERO, Vec2::Y, Vec2::X)?, Orientation::Clockwise);
+/// // 0.1 is not exact in binary; the three points are still exactly collinear.
+/// assert_eq!(orient2d(Vec2::ZERO, Vec2::splat(0.1), Vec2::splat(3.0))?, Orientation::Collinear);
+/// assert!(orient2d(Vec2::NAN, Vec2::X, Vec2::Y).is_err());
+/// # Ok::<(), barytex_interp::InterpError>(())
 /// ```
-#[must_use]
 #[inline]
-pub fn orient2d(a: Vec2, b: Vec2, c: Vec2) -> Option<Orientation> {
+pub fn orient2d(a: Vec2, b: Vec2, c: Vec2) -> Result<Orientation, InterpError> {
     let det = crate::determinant::orient2d_sign_det(a, b, c);
-    det.is_finite().then(|| Orientation::of_determinant(det))
+    if det.is_finite() {
+        Ok(Orientation::of_determinant(det))
+    } else {
+        Err(non_finite_point(&[("a", a), ("b", b), ("c", c)]))
+    }
+}
+
+/// The [`InterpError::NonFinite`] naming the first non-finite point of `named`.
+#[cold]
+pub(crate) fn non_finite_point<V: NonFinite>(named: &[(&'static str, V)]) -> InterpError {
+    let what = named
+        .iter()
+        .find(|(_, v)| !v.all_finite())
+        .map_or("point", |&(name, _)| name);
+    InterpError::NonFinite { what }
+}
+
+/// `is_finite` for the point types the predicates take.
+pub(crate) trait NonFinite: Copy {
+    fn all_finite(self) -> bool;
+}
+
+impl NonFinite for Vec2 {
+    fn all_finite(self) -> bool {
+        self.is_finite()
+    }
+}
+
+impl NonFinite for glam::Vec3 {
+    fn all_finite(self) -> bool {
+        self.is_finite()
+    }
 }
 
 /// `(b − a) × (c − a)` with an exact sign and a relative error below 2⁻³⁰; `None` for non-finite

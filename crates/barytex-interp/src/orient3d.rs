@@ -18,7 +18,7 @@
 
 use glam::Vec3;
 
-use crate::Orientation;
+use crate::{InterpError, Orientation};
 
 /// Shewchuk's `o3derrboundA`, `(7 + 56ε)ε` with `ε = 2⁻⁵³`: the f64 determinant of the rounded
 /// differences is within `O3D_ERRBOUND_A · permanent` of the exact one.
@@ -38,7 +38,9 @@ const O3D_ERRBOUND_A: f64 = (7.0 + 56.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2
 /// This is the opposite sign of Shewchuk's `orient3d` (and of the `robust` crate's), which is
 /// positive when `d` lies *below* a plane whose `a, b, c` run counter-clockwise seen from above.
 ///
-/// Returns `None` when an input is NaN or infinite.
+/// # Errors
+/// [`InterpError::NonFinite`] naming the first point (`"a"` … `"d"`) with a NaN or infinite
+/// coordinate.
 ///
 /// # Accuracy
 /// Exact sign for every finite f32 input: huge (up to `f32::MAX`), tiny and subnormal
@@ -47,23 +49,35 @@ const O3D_ERRBOUND_A: f64 = (7.0 + 56.0 * f64::EPSILON / 2.0) * f64::EPSILON / 2
 /// orient3d_total_on_any_bits, extreme_magnitudes_are_exact}`).
 ///
 /// ```
-/// use barytex_interp::{orient3d, Orientation};
+/// use barytex_interp::{orient3d, InterpError, Orientation};
 /// use glam::Vec3;
 ///
-/// let o = orient3d(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z);
-/// assert_eq!(o, Some(Orientation::CounterClockwise));
-/// assert_eq!(orient3d(Vec3::ZERO, Vec3::Y, Vec3::X, Vec3::Z), Some(Orientation::Clockwise));
+/// let o = orient3d(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z)?;
+/// assert_eq!(o, Orientation::CounterClockwise);
+/// assert_eq!(orient3d(Vec3::ZERO, Vec3::Y, Vec3::X, Vec3::Z)?, Orientation::Clockwise);
 /// // Four points of the plane z = 0.1 (0.1 is not exact in binary: the answer still is).
 /// let p = |x: f32, y: f32| Vec3::new(x, y, 0.1);
-/// let coplanar = orient3d(p(0.3, 0.7), p(1.1, 0.2), p(0.9, 0.9), p(1e-3, 5e3));
-/// assert_eq!(coplanar, Some(Orientation::Collinear));
-/// assert_eq!(orient3d(Vec3::NAN, Vec3::X, Vec3::Y, Vec3::Z), None);
+/// let coplanar = orient3d(p(0.3, 0.7), p(1.1, 0.2), p(0.9, 0.9), p(1e-3, 5e3))?;
+/// assert_eq!(coplanar, Orientation::Collinear);
+/// assert_eq!(
+///     orient3d(Vec3::X, Vec3::NAN, Vec3::Y, Vec3::Z),
+///     Err(InterpError::NonFinite { what: "b" })
+/// );
+/// # Ok::<(), InterpError>(())
 /// ```
-#[must_use]
 #[inline]
-pub fn orient3d(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> Option<Orientation> {
+pub fn orient3d(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> Result<Orientation, InterpError> {
     let det = orient3d_sign_det(a, b, c, d);
-    det.is_finite().then(|| Orientation::of_determinant(det))
+    if det.is_finite() {
+        Ok(Orientation::of_determinant(det))
+    } else {
+        Err(crate::orient::non_finite_point(&[
+            ("a", a),
+            ("b", b),
+            ("c", c),
+            ("d", d),
+        ]))
+    }
 }
 
 /// `det[b − a, c − a, d − a]` with an exact sign: the f64 determinant when the filter certifies
@@ -327,11 +341,11 @@ mod tests {
     #[test]
     fn unit_tetrahedron_signs() {
         let o = |a, b, c, d| orient3d(a, b, c, d).map(Orientation::sign);
-        assert_eq!(o(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z), Some(1));
-        assert_eq!(o(Vec3::ZERO, Vec3::X, Vec3::Y, -Vec3::Z), Some(-1));
+        assert_eq!(o(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z), Ok(1));
+        assert_eq!(o(Vec3::ZERO, Vec3::X, Vec3::Y, -Vec3::Z), Ok(-1));
         assert_eq!(
             o(Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::ONE.with_z(0.0)),
-            Some(0)
+            Ok(0)
         );
     }
 

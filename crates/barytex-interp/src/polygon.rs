@@ -1,8 +1,9 @@
 //! Generalized barycentric coordinates over convex polygons (Wachspress, mean value).
 //!
 //! Splitting a quad or pentagon into triangles and interpolating per triangle makes the result
-//! depend on the split (seed 004: "the result depends on the orientation of the polygon when it
-//! is not a triangle"). Generalized barycentric coordinates give every vertex one smooth weight
+//! depend on the split: interpolated shading of a polygon that is not a triangle depends on the
+//! polygon's orientation on screen (Foley, van Dam, Feiner and Hughes, *Computer Graphics:
+//! Principles and Practice*, 2nd ed., 1990, "Problems with interpolated shading"). Generalized barycentric coordinates give every vertex one smooth weight
 //! over the whole polygon instead: the weights are non-negative inside, sum to one, reproduce
 //! the point (`Σ λᵢ·vᵢ = p`, linear precision), equal the ordinary barycentric coordinates on a
 //! triangle, are linear along each edge and do not depend on where the vertex list starts.
@@ -182,8 +183,11 @@ impl GeneralizedBarycentric {
 
 /// `Σ wᵢ·valuesᵢ`: the value at a point from its polygon weights and the per-vertex values.
 ///
-/// Returns `None` when the slices differ in length or are empty. Weights `eᵢ` (a point on
-/// vertex `i`) return `values[i]` exactly for finite values.
+/// Weights `eᵢ` (a point on vertex `i`) return `values[i]` exactly for finite values.
+///
+/// # Errors
+/// [`PolygonError::WeightsLength`] when the slices differ in length,
+/// [`PolygonError::TooFewVertices`] when they are empty.
 ///
 /// # Accuracy
 /// One [`Interpolate::combine`]: the bound of the `Interpolate` laws
@@ -196,13 +200,19 @@ impl GeneralizedBarycentric {
 /// let mut w = [0.0; 4];
 /// mean_value_weights(Vec2::new(2.0, 1.0), &quad, &mut w)?;
 /// let v = interpolate_polygon(&w, &[0.0f32, 1.0, 3.0, 0.0]);
-/// assert_eq!(v, Some(2.0)); // halfway along the edge from 1.0 to 3.0
+/// assert_eq!(v, Ok(2.0)); // halfway along the edge from 1.0 to 3.0
 /// # Ok::<(), barytex_interp::PolygonError>(())
 /// ```
-#[must_use]
-pub fn interpolate_polygon<T: Interpolate>(weights: &[f32], values: &[T]) -> Option<T> {
+pub fn interpolate_polygon<T: Interpolate>(
+    weights: &[f32],
+    values: &[T],
+) -> Result<T, PolygonError> {
     if weights.len() != values.len() {
-        return None;
+        return Err(PolygonError::WeightsLength {
+            vertices: values.len(),
+            weights: weights.len(),
+        });
     }
     T::combine(values.iter().copied().zip(weights.iter().copied()))
+        .ok_or(PolygonError::TooFewVertices { count: 0 })
 }

@@ -1,4 +1,4 @@
-//! Trilinear interpolation of eight corner values (seed 000).
+//! Trilinear interpolation of eight corner values (Buss 2003, ch. IV, trilinear interpolation).
 
 use glam::Vec3;
 

@@ -1,13 +1,11 @@
 //! Bad input the other tests do not feed: the documented *zero* results of the whole SLERP
 //! family (not only "finite"), Eberly's `terms` out of range, `lerp_f64` with NaN/∞,
-//! `inverse_lerp` overflowing, `perspective_interpolate`'s `None`.
+//! `inverse_lerp` overflowing, `perspective_interpolate`'s errors.
 
 use barytex_interp::{
-    NormalInterpolation, QuatInterpolation, QuatPath, interpolate_normal, inverse_lerp, lerp_f64,
-    nlerp_corrected_quat, nlerp_quat, perspective_interpolate, slerp_dquat, slerp_dvec2,
-    slerp_dvec3, slerp_dvec4, slerp_eberly_quat, slerp_quat, slerp_vec2, slerp_vec3, slerp_vec3a,
-    slerp_vec4, try_slerp_dquat, try_slerp_dvec2, try_slerp_dvec3, try_slerp_dvec4, try_slerp_quat,
-    try_slerp_vec2, try_slerp_vec3, try_slerp_vec3a, try_slerp_vec4,
+    InterpError, NlerpCorrection, NormalInterpolation, QuatInterpolation, QuatPath,
+    interpolate_normal, inverse_lerp, lerp_f64, nlerp_corrected_quat, nlerp_quat,
+    perspective_interpolate, slerp, slerp_along, slerp_eberly_quat, try_slerp, try_slerp_along,
 };
 use glam::{DQuat, DVec2, DVec3, DVec4, Quat, Vec2, Vec3, Vec3A, Vec4};
 
@@ -26,97 +24,49 @@ fn is_zero64<const N: usize>(what: &str, v: [f64; N]) {
 }
 
 /// `slerp(a, b, t)` for the bad cases of one type: zero or non-finite `a` or `b`, non-finite
-/// `t`; `good` is a pair of unit vectors.
+/// `t`; `good` is a pair of unit vectors. `try_slerp` names the first bad input.
 macro_rules! check_vector_slerp {
-    ($slerp:ident, $try_slerp:ident, $v:ty, $bad:expr, $zero:ident, $a:expr, $b:expr) => {{
+    ($v:ty, $bad:expr, $zero:ident, $a:expr, $b:expr) => {{
         let (a, b): ($v, $v) = ($a, $b);
-        let mut cases: Vec<($v, $v, _)> = vec![(<$v>::ZERO, b, 0.5), (a, <$v>::ZERO, 0.5)];
+        let non_finite = |what| InterpError::NonFinite { what };
+        let zero_length = |what| InterpError::ZeroLength { what };
+        let mut cases: Vec<($v, $v, _, InterpError)> = vec![
+            (<$v>::ZERO, b, 0.5, zero_length("a")),
+            (a, <$v>::ZERO, 0.5, zero_length("b")),
+            (<$v>::ZERO, <$v>::ZERO, 0.5, zero_length("a")),
+        ];
         for bad in $bad {
-            cases.push((<$v>::splat(bad), b, 0.5));
-            cases.push((a, <$v>::splat(bad), 0.5));
+            cases.push((<$v>::splat(bad), b, 0.5, non_finite("a")));
+            cases.push((a, <$v>::splat(bad), 0.5, non_finite("b")));
+            cases.push((<$v>::ZERO, <$v>::splat(bad), 0.5, zero_length("a")));
             let mut one = a;
             one[0] = bad;
-            cases.push((one, b, 0.25));
-            cases.push((a, b, bad));
+            cases.push((one, b, 0.25, non_finite("a")));
+            cases.push((a, b, bad, non_finite("t")));
+            cases.push((<$v>::ZERO, b, bad, non_finite("t")));
             // Even at the ends, where a good input is returned bit for bit.
-            cases.push((<$v>::splat(bad), b, 0.0));
-            cases.push((a, <$v>::splat(bad), 1.0));
+            cases.push((<$v>::splat(bad), b, 0.0, non_finite("a")));
+            cases.push((a, <$v>::splat(bad), 1.0, non_finite("b")));
         }
-        for (x, y, t) in cases {
-            let what = format!("{}({x}, {y}, {t})", stringify!($slerp));
-            $zero(&what, $slerp(x, y, t).to_array());
-            assert_eq!($try_slerp(x, y, t), None, "{what}");
+        for (x, y, t, error) in cases {
+            let what = format!("slerp::<{}>({x}, {y}, {t})", stringify!($v));
+            $zero(&what, slerp(x, y, t).to_array());
+            assert_eq!(try_slerp(x, y, t), Err(error), "{what}");
         }
         // The good pair is answered.
-        assert!($try_slerp(a, b, 0.5).is_some(), stringify!($slerp));
+        assert_eq!(try_slerp(a, b, 0.5), Ok(slerp(a, b, 0.5)), stringify!($v));
     }};
 }
 
 #[test]
 fn every_vector_slerp_gives_zero_for_zero_or_non_finite_input() {
-    check_vector_slerp!(
-        slerp_vec2,
-        try_slerp_vec2,
-        Vec2,
-        BAD32,
-        is_zero,
-        Vec2::X,
-        Vec2::Y
-    );
-    check_vector_slerp!(
-        slerp_vec3,
-        try_slerp_vec3,
-        Vec3,
-        BAD32,
-        is_zero,
-        Vec3::X,
-        Vec3::Z
-    );
-    check_vector_slerp!(
-        slerp_vec3a,
-        try_slerp_vec3a,
-        Vec3A,
-        BAD32,
-        is_zero,
-        Vec3A::X,
-        Vec3A::Y
-    );
-    check_vector_slerp!(
-        slerp_vec4,
-        try_slerp_vec4,
-        Vec4,
-        BAD32,
-        is_zero,
-        Vec4::X,
-        Vec4::W
-    );
-    check_vector_slerp!(
-        slerp_dvec2,
-        try_slerp_dvec2,
-        DVec2,
-        BAD64,
-        is_zero64,
-        DVec2::X,
-        DVec2::Y
-    );
-    check_vector_slerp!(
-        slerp_dvec3,
-        try_slerp_dvec3,
-        DVec3,
-        BAD64,
-        is_zero64,
-        DVec3::Y,
-        DVec3::Z
-    );
-    check_vector_slerp!(
-        slerp_dvec4,
-        try_slerp_dvec4,
-        DVec4,
-        BAD64,
-        is_zero64,
-        DVec4::Z,
-        DVec4::W
-    );
+    check_vector_slerp!(Vec2, BAD32, is_zero, Vec2::X, Vec2::Y);
+    check_vector_slerp!(Vec3, BAD32, is_zero, Vec3::X, Vec3::Z);
+    check_vector_slerp!(Vec3A, BAD32, is_zero, Vec3A::X, Vec3A::Y);
+    check_vector_slerp!(Vec4, BAD32, is_zero, Vec4::X, Vec4::W);
+    check_vector_slerp!(DVec2, BAD64, is_zero64, DVec2::X, DVec2::Y);
+    check_vector_slerp!(DVec3, BAD64, is_zero64, DVec3::Y, DVec3::Z);
+    check_vector_slerp!(DVec4, BAD64, is_zero64, DVec4::Z, DVec4::W);
 }
 
 #[test]
@@ -136,9 +86,13 @@ fn quaternion_slerps_give_zero_for_zero_or_non_finite_input() {
             ]);
         }
         for (x, y, t) in cases {
-            let what = format!("slerp_quat({x}, {y}, {t}, {path:?})");
-            is_zero(&what, slerp_quat(x, y, t, path).to_array());
-            assert_eq!(try_slerp_quat(x, y, t, path), None, "{what}");
+            let what = format!("slerp_along({x}, {y}, {t}, {path:?})");
+            is_zero(&what, slerp_along(x, y, t, path).to_array());
+            assert!(try_slerp_along(x, y, t, path).is_err(), "{what}");
+            if path == QuatPath::Shortest {
+                is_zero(&what, slerp(x, y, t).to_array());
+                assert!(try_slerp(x, y, t).is_err(), "{what}");
+            }
         }
         let (a, b) = (a.as_dquat(), b.as_dquat());
         let zero = DQuat::from_xyzw(0.0, 0.0, 0.0, 0.0);
@@ -148,9 +102,13 @@ fn quaternion_slerps_give_zero_for_zero_or_non_finite_input() {
             cases.extend([(q, b, 0.5), (a, q, 0.5), (a, b, bad)]);
         }
         for (x, y, t) in cases {
-            let what = format!("slerp_dquat({x}, {y}, {t}, {path:?})");
-            is_zero64(&what, slerp_dquat(x, y, t, path).to_array());
-            assert_eq!(try_slerp_dquat(x, y, t, path), None, "{what}");
+            let what = format!("slerp_along({x}, {y}, {t}, {path:?})");
+            is_zero64(&what, slerp_along(x, y, t, path).to_array());
+            assert!(try_slerp_along(x, y, t, path).is_err(), "{what}");
+            if path == QuatPath::Shortest {
+                is_zero64(&what, slerp(x, y, t).to_array());
+                assert!(try_slerp(x, y, t).is_err(), "{what}");
+            }
         }
     }
 }
@@ -178,10 +136,10 @@ fn quaternion_approximations_give_zero_for_non_finite_input() {
     for (x, y, t) in cases {
         let what = format!("({x}, {y}, {t})");
         is_zero(&format!("nlerp {what}"), nlerp_quat(x, y, t).to_array());
-        for precise in [false, true] {
+        for correction in [NlerpCorrection::Fast, NlerpCorrection::Precise] {
             is_zero(
-                &format!("nlerp_corrected {precise} {what}"),
-                nlerp_corrected_quat(x, y, t, precise).to_array(),
+                &format!("nlerp_corrected {correction:?} {what}"),
+                nlerp_corrected_quat(x, y, t, correction).to_array(),
             );
         }
         is_zero(
@@ -249,11 +207,11 @@ fn interpolate_normal_gives_zero_for_zero_or_non_finite_normals() {
             );
         }
     }
-    // Opposite normals halfway: Renormalize → zero; Slerp → slerp_vec3's perpendicular.
+    // Opposite normals halfway: Renormalize → zero; Slerp → slerp's perpendicular.
     let r = interpolate_normal(Vec3::Z, -Vec3::Z, 0.5, NormalInterpolation::Renormalize);
     assert_eq!(r, Vec3::ZERO);
     let s = interpolate_normal(Vec3::Z, -Vec3::Z, 0.5, NormalInterpolation::Slerp);
-    assert_eq!(s, slerp_vec3(Vec3::Z, -Vec3::Z, 0.5));
+    assert_eq!(s, slerp(Vec3::Z, -Vec3::Z, 0.5));
     assert!(
         (s.length() - 1.0).abs() < 1e-6 && s.dot(Vec3::Z).abs() < 1e-6,
         "{s}"
@@ -312,21 +270,21 @@ fn lerp_f64_special_values() {
 
 #[test]
 fn inverse_lerp_overflows_to_signed_infinity() {
-    assert_eq!(inverse_lerp(0.0, 1e-30, 1e30), Some(f32::INFINITY));
-    assert_eq!(inverse_lerp(0.0, 1e-30, -1e30), Some(f32::NEG_INFINITY));
-    assert_eq!(inverse_lerp(0.0, -1e-30, 1e30), Some(f32::NEG_INFINITY));
+    assert_eq!(inverse_lerp(0.0, 1e-30, 1e30), Ok(f32::INFINITY));
+    assert_eq!(inverse_lerp(0.0, 1e-30, -1e30), Ok(f32::NEG_INFINITY));
+    assert_eq!(inverse_lerp(0.0, -1e-30, 1e30), Ok(f32::NEG_INFINITY));
     // Subnormal spans still answer.
-    assert_eq!(inverse_lerp(0.0, 1e-45, 1e-45), Some(1.0));
+    assert_eq!(inverse_lerp(0.0, 1e-45, 1e-45), Ok(1.0));
     // x − a beyond f32 on its own: f32::MAX − (−f32::MAX).
     let r = inverse_lerp(-f32::MAX, 0.0, f32::MAX).expect("finite inputs, a ≠ b");
     assert!(r == 2.0 || r == f32::INFINITY, "{r}");
 }
 
 #[test]
-fn perspective_interpolate_is_none_exactly_when_the_weights_are() {
+fn perspective_interpolate_fails_exactly_when_the_weights_do() {
     let values = [0.0_f32, 10.0, 20.0];
     let screen = [0.2, 0.3, 0.5];
-    assert!(perspective_interpolate(values, screen, [1.0, 2.0, 4.0]).is_some());
+    assert!(perspective_interpolate(values, screen, [1.0, 2.0, 4.0]).is_ok());
     for (screen, w) in [
         (screen, [0.0, 1.0, 1.0]),
         (screen, [-1.0, 1.0, 1.0]),
@@ -335,14 +293,11 @@ fn perspective_interpolate_is_none_exactly_when_the_weights_are() {
         ([f32::NAN, 0.5, 0.5], [1.0; 3]),
         ([0.0; 3], [1.0; 3]),
     ] {
+        let error = barytex_interp::perspective_correct_weights(screen, w)
+            .expect_err("bad input is rejected");
         assert_eq!(
             perspective_interpolate(values, screen, w),
-            None,
-            "{screen:?} {w:?}"
-        );
-        assert_eq!(
-            barytex_interp::perspective_correct_weights(screen, w),
-            None,
+            Err(error),
             "{screen:?} {w:?}"
         );
     }

@@ -1,4 +1,4 @@
-//! 2D barycentric coordinates: the seed's worked examples and theorems, the accuracy bar, the
+//! 2D barycentric coordinates: Denisjuk's worked examples and theorems, the accuracy bar, the
 //! hard-case table, special values.
 #![allow(clippy::unwrap_used, missing_docs)]
 
@@ -16,7 +16,7 @@ use glam::Vec2;
 use num_bigint::BigInt;
 use proptest::prelude::*;
 
-const SEED_TRIANGLE: [Vec2; 3] = [
+const EXAMPLE_TRIANGLE: [Vec2; 3] = [
     Vec2::new(0.0, 0.0),
     Vec2::new(2.0, 3.0),
     Vec2::new(3.0, 1.0),
@@ -35,9 +35,9 @@ fn assert_weights(got: [f32; 3], want: [(i64, i64); 3]) {
     }
 }
 
-/// Seed 000, Example 7: the weights it lists, from the points they give.
+/// Denisjuk, Example 7: the weights it lists, from the points they give.
 #[test]
-fn seed_example_7() {
+fn denisjuk_example_7() {
     let cases = [
         (
             Vec2::new(2.0, 3.0),
@@ -57,12 +57,12 @@ fn seed_example_7() {
     ];
     for (p, want, location) in cases {
         // The f32 point is not exactly the rational one; compare with the exact weights of the
-        // f32 point and also check they round to the seed's answer.
-        let b = barycentric_2d(p, SEED_TRIANGLE).unwrap();
-        check_barycentric_2d(p, SEED_TRIANGLE).unwrap();
+        // f32 point and also check they round to the text's answer.
+        let b = barycentric_2d(p, EXAMPLE_TRIANGLE).unwrap();
+        check_barycentric_2d(p, EXAMPLE_TRIANGLE).unwrap();
         if p == Vec2::new(2.0, 3.0) {
             assert_eq!(b.weights, [0.0, 1.0, 0.0]);
-            // The seed's triangle is clockwise: zero weights must still be +0.0, not -0.0.
+            // The example's triangle is clockwise: zero weights must still be +0.0, not -0.0.
             assert!(
                 b.weights.iter().all(|w| w.is_sign_positive()),
                 "{:?}",
@@ -81,28 +81,28 @@ fn seed_example_7() {
     }
 }
 
-/// Seed 000, Example 9: the points u = (2,3), (11/3,2), (3/2,3/2), (1,0) in the same triangle.
+/// Denisjuk, Example 9: the points u = (2,3), (11/3,2), (3/2,3/2), (1,0) in the same triangle.
 #[test]
-fn seed_example_9() {
-    let b = barycentric_2d(Vec2::new(2.0, 3.0), SEED_TRIANGLE).unwrap();
+fn denisjuk_example_9() {
+    let b = barycentric_2d(Vec2::new(2.0, 3.0), EXAMPLE_TRIANGLE).unwrap();
     assert_weights(b.weights, [(0, 1), (1, 1), (0, 1)]);
-    let b = barycentric_2d(Vec2::new(1.5, 1.5), SEED_TRIANGLE).unwrap();
+    let b = barycentric_2d(Vec2::new(1.5, 1.5), EXAMPLE_TRIANGLE).unwrap();
     assert_weights(b.weights, [(5, 14), (3, 7), (3, 14)]);
     assert_eq!(b.location, Location::Inside);
-    let b = barycentric_2d(Vec2::new(1.0, 0.0), SEED_TRIANGLE).unwrap();
+    let b = barycentric_2d(Vec2::new(1.0, 0.0), EXAMPLE_TRIANGLE).unwrap();
     assert_weights(b.weights, [(5, 7), (-1, 7), (3, 7)]);
     assert_eq!(b.location, Location::Outside);
     // 11/3 is not an f32: the weights are those of the nearest f32 point, close to (−1/3, 1/3, 1).
     let p = Vec2::new(11.0 / 3.0, 2.0);
-    let b = barycentric_2d(p, SEED_TRIANGLE).unwrap();
-    check_barycentric_2d(p, SEED_TRIANGLE).unwrap();
+    let b = barycentric_2d(p, EXAMPLE_TRIANGLE).unwrap();
+    check_barycentric_2d(p, EXAMPLE_TRIANGLE).unwrap();
     for (g, want) in b.weights.iter().zip([-1.0 / 3.0, 1.0 / 3.0, 1.0]) {
         assert!((f64::from(*g) - want).abs() < 1e-6);
     }
     assert_eq!(b.location, Location::Outside);
 }
 
-/// Seed 001: the centroid has (1/3, 1/3, 1/3); a vertex has (1, 0, 0).
+/// The centroid has (1/3, 1/3, 1/3); a vertex has (1, 0, 0).
 #[test]
 fn centroid_and_vertex() {
     let tri = [
@@ -258,7 +258,7 @@ fn degenerate_and_non_finite() {
     );
     for v in barytex_interp::hard_cases::NON_FINITE {
         assert_eq!(
-            barycentric_2d(Vec2::new(v, 0.0), SEED_TRIANGLE),
+            barycentric_2d(Vec2::new(v, 0.0), EXAMPLE_TRIANGLE),
             Err(InterpError::NonFinite { what: "point" })
         );
         assert_eq!(

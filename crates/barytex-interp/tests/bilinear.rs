@@ -1,4 +1,4 @@
-//! Bilinear interpolation and its inverse: the seed's Example 10, Theorem 11 and Corollary 12 as
+//! Bilinear interpolation and its inverse: Denisjuk's Example 10, Theorem 11 and Corollary 12 as
 //! property tests, scale invariance, parallelograms without thresholds, folded quads, the
 //! hard-case table, special values.
 #![allow(clippy::unwrap_used, missing_docs)]
@@ -36,9 +36,9 @@ fn reference(quad: [Vec2; 4], p: Vec2, start: Vec2) -> DVec2 {
     inverse_bilinear_newton(p.as_dvec2(), quad.map(|v| v.as_dvec2()), start.as_dvec2()).unwrap()
 }
 
-/// Seed 000, Example 10: the four (α, β) pairs map to these exact points and back.
+/// Denisjuk, Example 10: the four (α, β) pairs map to these exact points and back.
 #[test]
-fn seed_example_10() {
+fn denisjuk_example_10() {
     let cases = [
         ((1, 1), (0, 1), (4, 1), (0, 1)),
         ((1, 3), (1, 1), (5, 3), (7, 3)),
@@ -208,7 +208,7 @@ proptest! {
     }
 }
 
-/// The seed's Figure IV.13: a non-convex (arrow-head) quad folds, so some points have two
+/// Buss 2003, Figure IV.13: a non-convex (arrow-head) quad folds, so some points have two
 /// preimages in [0,1]²; both are reported and both map back.
 #[test]
 fn non_convex_quad_reports_both_roots() {
@@ -359,7 +359,7 @@ fn mixed_magnitudes_keep_both_fold_preimages() {
     }
 }
 
-/// Review finding: a planar non-convex quad in 3D was projected onto a line (the seed's plane
+/// Review finding: a planar non-convex quad in 3D was projected onto a line (Buss's plane
 /// lies in the quad's plane then) and reported degenerate; it is answered in its own plane.
 #[test]
 fn planar_non_convex_quad_in_3d() {

@@ -1,4 +1,4 @@
-//! Affine and convex combinations (seed 000, Definition 2 and Theorem 3) and homogeneous
+//! Affine and convex combinations (Denisjuk, Definition 2 and Theorem 3) and homogeneous
 //! coordinates.
 #![allow(clippy::unwrap_used, missing_docs)]
 
@@ -45,11 +45,11 @@ proptest! {
             let n = (pts[1] - pts[0]).cross(pts[2] - pts[0]).length();
             let e = (pts[1] - pts[0]).length().max((pts[2] - pts[0]).length()).max((pts[2] - pts[1]).length());
             let slack = 1e-5 * (1.0 + 20.0 * e * e / n.max(1e-30));
-            prop_assert!(b.iter().all(|&x| x >= -slack), "{b:?}");
+            prop_assert!(b.weights.iter().all(|&x| x >= -slack), "{b:?}");
         }
     }
 
-    /// Seed 000: convex combinations of homogeneous coordinates (x : w), w > 0, are homogeneous
+    /// Buss 2003, ch. IV: convex combinations of homogeneous coordinates (x : w), w > 0, are homogeneous
     /// coordinates of a point of the convex hull — the segment here, with the weights
     /// αᵢwᵢ/Σαⱼwⱼ.
     #[test]

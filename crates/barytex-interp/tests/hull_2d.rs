@@ -1,4 +1,4 @@
-//! The 2D convex hull: the seed's theorem (every point is a convex combination of the hull's
+//! The 2D convex hull: the convex-hull theorem (every point is a convex combination of the hull's
 //! vertices, which are input points), exactness against a brute-force rational hull and spade,
 //! the collinear policy, duplicates, degenerate and non-finite inputs, the hard-case table.
 #![allow(clippy::unwrap_used, missing_docs)]
@@ -255,7 +255,7 @@ fn hard_cases_match_spade() {
     assert!(compared >= 5, "spade compared on only {compared} cases");
 }
 
-/// Seed 003's theorem, constructively: each input point is a convex combination of three hull
+/// The convex-hull theorem (Denisjuk, Theorem 15), constructively: each input point is a convex combination of three hull
 /// vertices, found by fanning the hull from its first vertex.
 fn convex_combination_of_hull(points: &[Vec2]) -> Result<(), TestCaseError> {
     let h = convex_hull_2d(points, CollinearPoints::Drop).unwrap();
@@ -290,7 +290,7 @@ fn convex_combination_of_hull(points: &[Vec2]) -> Result<(), TestCaseError> {
     Ok(())
 }
 
-/// Seed 003's theorem, exactly: no input point is strictly right of any hull edge (rational
+/// The convex-hull theorem, exactly: no input point is strictly right of any hull edge (rational
 /// arithmetic, independent of the crate's predicates), and the hull vertices are input points.
 fn exactly_inside_every_edge(points: &[Vec2]) -> Result<(), TestCaseError> {
     for policy in POLICIES {
@@ -329,13 +329,13 @@ proptest! {
     }
 
     #[test]
-    fn seed_theorem_convex_combination(points in prop::collection::vec(vec2_in(-100.0, 100.0), 3..30)) {
+    fn hull_theorem_convex_combination(points in prop::collection::vec(vec2_in(-100.0, 100.0), 3..30)) {
         convex_combination_of_hull(&points)?;
         exactly_inside_every_edge(&points)?;
     }
 
     #[test]
-    fn seed_theorem_on_grids(points in grid_points(60)) {
+    fn hull_theorem_on_grids(points in grid_points(60)) {
         convex_combination_of_hull(&points)?;
         exactly_inside_every_edge(&points)?;
     }

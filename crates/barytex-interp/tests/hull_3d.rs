@@ -1,4 +1,4 @@
-//! The 3D convex hull: validity on random clouds, the seed's theorem checked with exact
+//! The 3D convex hull: validity on random clouds, the convex-hull theorem checked with exact
 //! rationals, a brute-force exact reference, permutation and scale invariance, degenerate and
 //! non-finite inputs, the hard-case table.
 #![allow(clippy::unwrap_used, missing_docs)]
@@ -14,10 +14,10 @@ use barytex_testkit::strategies::{step_ulps, vec3_in};
 use glam::Vec3;
 use proptest::prelude::*;
 
-/// The seed's theorem, checked independently of `orient3d` with exact rationals: every input
+/// The convex-hull theorem (Denisjuk, Theorem 15), checked independently of `orient3d` with exact rationals: every input
 /// point is on the inner side of (or on) every facet, so it is a convex combination of the
 /// hull's corners; and the corners are input points (indices in range).
-fn assert_seed_theorem(points: &[Vec3], hull: &ConvexHull3d) {
+fn assert_hull_theorem(points: &[Vec3], hull: &ConvexHull3d) {
     for &v in hull.vertices() {
         assert!(v < points.len());
     }
@@ -29,7 +29,7 @@ fn assert_seed_theorem(points: &[Vec3], hull: &ConvexHull3d) {
     }
 }
 
-/// The most rational point-facet tests one seed-theorem check may make (about a second).
+/// The most rational point-facet tests one hull-theorem check may make (about a second).
 const RATIONAL_BUDGET: usize = 40_000;
 
 fn corner_points(points: &[Vec3], hull: &ConvexHull3d) -> Vec<[u32; 3]> {
@@ -73,7 +73,7 @@ fn random_clouds_are_valid() {
             check_convex_hull_3d(&points).unwrap_or_else(|e| panic!("{shape} {n}: {e}"));
             let hull = convex_hull_3d(&points).unwrap();
             if points.len() * hull.facets().len() <= RATIONAL_BUDGET {
-                assert_seed_theorem(&points, &hull);
+                assert_hull_theorem(&points, &hull);
             }
         }
     }
@@ -107,7 +107,7 @@ fn integer_grid_is_a_cube() {
     }
     let hull = convex_hull_3d(&points).unwrap();
     hull.validate(&points).unwrap();
-    assert_seed_theorem(&points, &hull);
+    assert_hull_theorem(&points, &hull);
     let corners: Vec<Vec3> = hull.vertices().iter().map(|&i| points[i]).collect();
     assert_eq!(corners.len(), 8, "{corners:?}");
     assert!(corners.iter().all(|c| c.abs() == Vec3::splat(3.0)));
@@ -204,7 +204,7 @@ fn hard_cases_are_valid() {
         check_convex_hull_3d(&case.points).unwrap_or_else(|e| panic!("{label}: {e}"));
         let hull = convex_hull_3d(&case.points).unwrap();
         if case.points.len() * hull.facets().len() <= RATIONAL_BUDGET {
-            assert_seed_theorem(&case.points, &hull);
+            assert_hull_theorem(&case.points, &hull);
         }
         if let Some(corners) = case.corners {
             assert_eq!(hull.vertices().len(), corners, "{label}: {hull:?}");

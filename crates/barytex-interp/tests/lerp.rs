@@ -72,7 +72,7 @@ proptest! {
         prop_assert!(ulps_between_f32(got, nearest) <= 1, "{got} vs {nearest}");
     }
 
-    /// Seed 000's projection formula inverts `lerp` on the segment, within 1 ulp of exact.
+    /// The projection formula (Buss 2003, ch. IV) inverts `lerp` on the segment, within 1 ulp of exact.
     #[test]
     fn segment_parameter_matches_exact(x1 in vec2_in(-100.0, 100.0), x2 in vec2_in(-100.0, 100.0), u in vec2_in(-300.0, 300.0)) {
         prop_assume!(x1 != x2);
@@ -111,15 +111,28 @@ fn special_values_never_panic() {
         );
         assert!(lerp(1.0, v, 0.5).is_nan() || v.is_infinite());
         assert!(lerp(1.0, 2.0, v).is_nan() || v.is_infinite());
-        assert_eq!(inverse_lerp(v, 1.0, 0.5), None);
-        assert_eq!(inverse_lerp(0.0, 1.0, v), None);
+        assert_eq!(
+            inverse_lerp(v, 1.0, 0.5),
+            Err(InterpError::NonFinite { what: "a" })
+        );
+        assert_eq!(
+            inverse_lerp(0.0, v, 0.5),
+            Err(InterpError::NonFinite { what: "b" })
+        );
+        assert_eq!(
+            inverse_lerp(0.0, 1.0, v),
+            Err(InterpError::NonFinite { what: "x" })
+        );
     }
     assert!(lerp(f32::NEG_INFINITY, f32::INFINITY, 0.5).is_nan());
     assert_eq!(lerp(f32::NAN, 2.0, 1.0), 2.0);
     assert!(lerp(f32::NAN, 2.0, 0.5).is_nan());
     assert!(lerp(f32::NAN, 2.0, 1.5).is_nan());
     assert!(lerp(1.0, f32::NAN, 0.5).is_nan());
-    assert_eq!(inverse_lerp(2.0, 2.0, 2.0), None);
+    assert_eq!(
+        inverse_lerp(2.0, 2.0, 2.0),
+        Err(InterpError::DegenerateSegment)
+    );
     assert_eq!(
         segment_parameter_2d(Vec2::ONE, Vec2::ZERO, Vec2::ZERO),
         Err(InterpError::DegenerateSegment)
@@ -131,7 +144,7 @@ fn special_values_never_panic() {
 }
 
 #[test]
-fn seed_projection_example() {
+fn projection_example() {
     // u − x1 = α(x2 − x1) on the line, and the foot of the perpendicular off it.
     let x1 = Vec2::new(1.0, 1.0);
     let x2 = Vec2::new(5.0, 3.0);

@@ -3,7 +3,7 @@
 
 use barytex_interp::hard_cases::kettner_grid;
 use barytex_interp::methods::{orient2d_dop_f32, orient2d_naive_f32};
-use barytex_interp::{Orientation, orient2d};
+use barytex_interp::{InterpError, Orientation, orient2d};
 use barytex_testkit::exact;
 use barytex_testkit::invariants::check_orient2d;
 use barytex_testkit::strategies::{near_degenerate_triangle_2d, vec2_bits, vec2_in};
@@ -98,15 +98,21 @@ fn extreme_magnitudes_are_exact() {
             Vec2::new(f32::from_bits(1), 0.0),
             Vec2::new(0.0, f32::from_bits(1))
         ),
-        Some(Orientation::CounterClockwise)
+        Ok(Orientation::CounterClockwise)
     );
 }
 
 #[test]
-fn non_finite_gives_none() {
+fn non_finite_is_an_error_naming_the_point() {
+    let named = |what| Err(InterpError::NonFinite { what });
     for v in barytex_interp::hard_cases::NON_FINITE {
-        assert_eq!(orient2d(Vec2::new(v, 0.0), Vec2::X, Vec2::Y), None);
-        assert_eq!(orient2d(Vec2::ZERO, Vec2::new(0.0, v), Vec2::Y), None);
-        assert_eq!(orient2d(Vec2::ZERO, Vec2::X, Vec2::splat(v)), None);
+        assert_eq!(orient2d(Vec2::new(v, 0.0), Vec2::X, Vec2::Y), named("a"));
+        assert_eq!(orient2d(Vec2::ZERO, Vec2::new(0.0, v), Vec2::Y), named("b"));
+        assert_eq!(orient2d(Vec2::ZERO, Vec2::X, Vec2::splat(v)), named("c"));
+        // The first bad point is named.
+        assert_eq!(
+            orient2d(Vec2::ZERO, Vec2::splat(v), Vec2::splat(v)),
+            named("b")
+        );
     }
 }

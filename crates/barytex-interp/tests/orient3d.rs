@@ -3,7 +3,7 @@
 #![allow(clippy::unwrap_used, missing_docs)]
 
 use barytex_interp::methods::orient3d_naive_f64;
-use barytex_interp::{Orientation, orient3d};
+use barytex_interp::{InterpError, Orientation, orient3d};
 use barytex_testkit::exact;
 use barytex_testkit::invariants_3d::check_orient3d;
 use barytex_testkit::seeded::XorShift;
@@ -210,7 +210,7 @@ fn extreme_magnitudes_are_exact() {
             Vec3::new(0.0, tiny, 0.0),
             Vec3::new(0.0, 0.0, tiny)
         ),
-        Some(Orientation::CounterClockwise)
+        Ok(Orientation::CounterClockwise)
     );
 }
 
@@ -234,7 +234,8 @@ fn last_ulp_tetrahedra_are_exact() {
 }
 
 #[test]
-fn non_finite_gives_none() {
+fn non_finite_is_an_error_naming_the_point() {
+    let named = |what| Err(InterpError::NonFinite { what });
     for v in barytex_interp::hard_cases::NON_FINITE {
         let bad = [
             Vec3::new(v, 0.0, 0.0),
@@ -243,10 +244,10 @@ fn non_finite_gives_none() {
             Vec3::splat(v),
         ];
         for p in bad {
-            assert_eq!(orient3d(p, Vec3::X, Vec3::Y, Vec3::Z), None);
-            assert_eq!(orient3d(Vec3::ZERO, p, Vec3::Y, Vec3::Z), None);
-            assert_eq!(orient3d(Vec3::ZERO, Vec3::X, p, Vec3::Z), None);
-            assert_eq!(orient3d(Vec3::ZERO, Vec3::X, Vec3::Y, p), None);
+            assert_eq!(orient3d(p, Vec3::X, Vec3::Y, Vec3::Z), named("a"));
+            assert_eq!(orient3d(Vec3::ZERO, p, Vec3::Y, Vec3::Z), named("b"));
+            assert_eq!(orient3d(Vec3::ZERO, Vec3::X, p, Vec3::Z), named("c"));
+            assert_eq!(orient3d(Vec3::ZERO, Vec3::X, Vec3::Y, p), named("d"));
         }
     }
     // Infinite but with zero cross terms, and opposite infinities that could cancel.
@@ -258,7 +259,7 @@ fn non_finite_gives_none() {
             Vec3::ZERO,
             Vec3::ZERO
         ),
-        None
+        named("a")
     );
     assert_eq!(
         orient3d(
@@ -267,6 +268,6 @@ fn non_finite_gives_none() {
             Vec3::Y,
             Vec3::Z
         ),
-        None
+        named("a")
     );
 }

@@ -1,8 +1,11 @@
 //! Perspective-correct (hyperbolic) interpolation: against the exact formula, exactly affine for
-//! equal w, and equal to interpolating in 3D and projecting (seeds 000 and 004).
+//! equal w, and equal to interpolating in 3D and projecting (Buss, *3D Computer Graphics*, 2003, §IV.5; Heckbert and Moreton, "Interpolation for
+//! polygon texture mapping and shading", 1991).
 #![allow(clippy::unwrap_used, missing_docs)]
 
-use barytex_interp::{barycentric_2d, perspective_correct_weights, perspective_interpolate};
+use barytex_interp::{
+    InterpError, barycentric_2d, perspective_correct_weights, perspective_interpolate,
+};
 use barytex_testkit::exact;
 use barytex_testkit::strategies::{affine_weights3, convex_weights3, vec3_in};
 use barytex_testkit::ulp::ulps_between_f32;
@@ -24,7 +27,7 @@ proptest! {
     /// With extrapolated (affine) weights the bound adds the cancellation term.
     #[test]
     fn perspective_weights_extrapolated(a in affine_weights3(), w in proptest::array::uniform3(0.1f32..100.0)) {
-        let Some(got) = perspective_correct_weights(a, w) else { return Ok(()); };
+        let Ok(got) = perspective_correct_weights(a, w) else { return Ok(()); };
         let want = exact::perspective_weights(&a, &w).unwrap();
         let q: Vec<f64> = a.iter().zip(&w).map(|(&ai, &wi)| f64::from(ai) / f64::from(wi)).collect();
         let cond = q.iter().map(|x| x.abs()).sum::<f64>() / q.iter().sum::<f64>().abs();
@@ -40,11 +43,11 @@ proptest! {
     #[test]
     fn equal_w_is_exactly_affine(k in (-2048i32..2048, -2048i32..2048), w in 1e-3f32..1e4, other in affine_weights3()) {
         let a = [k.0 as f32 / 1024.0, k.1 as f32 / 1024.0, (1024 - k.0 - k.1) as f32 / 1024.0];
-        prop_assert_eq!(perspective_correct_weights(a, [w; 3]), Some(a));
+        prop_assert_eq!(perspective_correct_weights(a, [w; 3]), Ok(a));
         let v = [Vec3::X, Vec3::Y, Vec3::Z];
-        prop_assert_eq!(perspective_interpolate(v, a, [w; 3]), barytex_interp::Interpolate::combine(v.into_iter().zip(a)));
+        prop_assert_eq!(perspective_interpolate(v, a, [w; 3]).ok(), barytex_interp::Interpolate::combine(v.into_iter().zip(a)));
         let sum: f64 = other.iter().map(|&x| f64::from(x)).sum();
-        if let Some(got) = perspective_correct_weights(other, [w; 3]) {
+        if let Ok(got) = perspective_correct_weights(other, [w; 3]) {
             for (g, o) in got.iter().zip(other) {
                 let want = f64::from(o) / sum;
                 prop_assert!((f64::from(*g) - want).abs() <= barytex_testkit::ulp::ulp_f32(want));
@@ -82,43 +85,66 @@ proptest! {
 }
 
 #[test]
-fn seed_004_formula_on_a_line() {
+fn formula_on_a_line() {
     // Half-way on screen between depths 1 and 3 is a quarter of the way in 3D.
     assert_eq!(
         perspective_correct_weights([0.5, 0.5], [1.0, 3.0]),
-        Some([0.75, 0.25])
+        Ok([0.75, 0.25])
     );
     assert_eq!(
         perspective_interpolate([0.0f32, 1.0], [0.5, 0.5], [1.0, 3.0]),
-        Some(0.25)
+        Ok(0.25)
     );
     // Endpoints stay endpoints.
     assert_eq!(
         perspective_correct_weights([1.0, 0.0, 0.0], [1.0, 2.0, 3.0]),
-        Some([1.0, 0.0, 0.0])
+        Ok([1.0, 0.0, 0.0])
     );
 }
 
 #[test]
 fn rejects_what_must_be_clipped_first() {
-    assert_eq!(perspective_correct_weights([0.5, 0.5], [1.0, 0.0]), None);
-    assert_eq!(perspective_correct_weights([0.5, 0.5], [1.0, -2.0]), None);
+    assert_eq!(
+        perspective_correct_weights([0.5, 0.5], [1.0, 0.0]),
+        Err(InterpError::NonPositiveW { index: 1, w: 0.0 })
+    );
+    assert_eq!(
+        perspective_correct_weights([0.5, 0.5], [1.0, -2.0]),
+        Err(InterpError::NonPositiveW { index: 1, w: -2.0 })
+    );
     assert_eq!(
         perspective_correct_weights([0.5, f32::NAN], [1.0, 2.0]),
-        None
+        Err(InterpError::NonFinite { what: "screen" })
     );
     assert_eq!(
         perspective_correct_weights([0.5, 0.5], [1.0, f32::INFINITY]),
-        None
+        Err(InterpError::NonFinite { what: "w" })
     );
-    assert_eq!(perspective_correct_weights([1.0, -1.0], [2.0, 2.0]), None);
-    assert_eq!(perspective_correct_weights([2.0, -1.0], [2.0, 1.0]), None);
+    assert_eq!(
+        perspective_correct_weights([1.0, -1.0], [2.0, 2.0]),
+        Err(InterpError::AtInfinity)
+    );
+    assert_eq!(
+        perspective_correct_weights([2.0, -1.0], [2.0, 1.0]),
+        Err(InterpError::AtInfinity)
+    );
+    assert_eq!(
+        perspective_interpolate([1.0f32, 2.0], [2.0, -1.0], [2.0, 1.0]),
+        Err(InterpError::AtInfinity)
+    );
+    assert_eq!(
+        perspective_correct_weights::<0>([], []),
+        Err(InterpError::AtInfinity)
+    );
 }
 
 /// Review finding: equal w took a fast path even for weights that do not sum to 1.
 #[test]
 fn equal_w_fast_path_only_for_unit_sums() {
-    assert_eq!(perspective_correct_weights([0.0, 0.0], [1.0, 1.0]), None);
+    assert_eq!(
+        perspective_correct_weights([0.0, 0.0], [1.0, 1.0]),
+        Err(InterpError::AtInfinity)
+    );
     let w = perspective_correct_weights([0.5, 0.6], [2.0, 2.0]).unwrap();
     assert!(
         (f64::from(w[0]) + f64::from(w[1]) - 1.0).abs() < 1e-7,

@@ -1,7 +1,7 @@
 //! Generalized barycentric coordinates over convex polygons (Wachspress, mean value): partition
 //! of unity, linear precision, non-negativity, the triangle case, rotation invariance, the
 //! Lagrange property, boundary linearity, scale and translation invariance, near-degenerate
-//! polygons, typed errors, the hard-case table, and seed 004's split-dependence.
+//! polygons, typed errors, the hard-case table, and the split-dependence of interpolating over a polygon's triangles.
 #![allow(clippy::unwrap_used, missing_docs)]
 
 use barytex_interp::hard_cases::polygons;
@@ -353,12 +353,13 @@ fn boundary_is_linear_on_edges() {
     }
 }
 
-/// Seed 004: "the result depends on the orientation of the polygon when it is not a
-/// triangle". Shading a quad by splitting it into two triangles gives different values at its
+/// Interpolated shading depends on the orientation of a polygon that is not a triangle (Foley et
+/// al., *Computer Graphics: Principles and Practice*, 2nd ed., "Problems with interpolated
+/// shading"). Shading a quad by splitting it into two triangles gives different values at its
 /// centre for the two diagonals (and so for a rotated vertex list, which moves the split);
 /// Wachspress and mean value give one value, bit-identical under every rotation.
 #[test]
-fn seed_004_split_dependence_is_gone() {
+fn split_dependence_is_gone() {
     let quad = [
         Vec2::new(0.0, 0.0),
         Vec2::new(4.0, 0.0),
@@ -503,11 +504,20 @@ fn large_polygons_take_the_second_pass() {
 /// `interpolate_polygon` rejects mismatched lengths and empty input.
 #[test]
 fn interpolate_polygon_lengths() {
-    assert_eq!(interpolate_polygon::<f32>(&[1.0], &[]), None);
-    assert_eq!(interpolate_polygon::<f32>(&[], &[]), None);
+    assert_eq!(
+        interpolate_polygon::<f32>(&[1.0], &[]),
+        Err(PolygonError::WeightsLength {
+            vertices: 0,
+            weights: 1
+        })
+    );
+    assert_eq!(
+        interpolate_polygon::<f32>(&[], &[]),
+        Err(PolygonError::TooFewVertices { count: 0 })
+    );
     assert_eq!(
         interpolate_polygon(&[0.25, 0.75], &[Vec2::ZERO, Vec2::splat(4.0)]),
-        Some(Vec2::splat(3.0))
+        Ok(Vec2::splat(3.0))
     );
 }
 

@@ -5,10 +5,9 @@
 
 use barytex_interp::hard_cases::{quaternion_pairs, vector_pairs};
 use barytex_interp::{
-    NormalInterpolation, QuatInterpolation, QuatPath, SLERP_F32_ANGLE_BOUND,
+    InterpError, NormalInterpolation, QuatInterpolation, QuatPath, SLERP_F32_ANGLE_BOUND,
     SLERP_F32_LENGTH_BOUND, SLERP_F64_ANGLE_BOUND, SLERP_F64_LENGTH_BOUND, interpolate_normal,
-    renormalize_spacing_error, slerp_dquat, slerp_dvec3, slerp_quat, slerp_vec2, slerp_vec3,
-    slerp_vec3a, slerp_vec4, try_slerp_quat, try_slerp_vec3,
+    renormalize_spacing_error, slerp, slerp_along, try_slerp, try_slerp_along,
 };
 use barytex_testkit::seeded::XorShift;
 use barytex_testkit::sphere::{self, errors};
@@ -40,7 +39,7 @@ impl Worst {
 
 /// f32 exact SLERP of a quaternion pair against the f64 reference.
 fn quat_errors(a: Quat, b: Quat, t: f32, path: QuatPath) -> (f64, f64) {
-    let r = slerp_quat(a, b, t, path);
+    let r = slerp_along(a, b, t, path);
     let b = if path == QuatPath::Shortest && a.dot(b) < 0.0 {
         -b
     } else {
@@ -59,7 +58,7 @@ fn quat_errors(a: Quat, b: Quat, t: f32, path: QuatPath) -> (f64, f64) {
 
 /// f32 exact SLERP of a vector pair against the f64 reference.
 fn vec3_errors(a: Vec3, b: Vec3, t: f32) -> (f64, f64) {
-    let r = slerp_vec3(a, b, t);
+    let r = slerp(a, b, t);
     let reference = sphere::slerp(
         &f64s(a.to_array()),
         &f64s(b.to_array()),
@@ -133,7 +132,7 @@ fn exact_slerp_other_f32_vectors_within_bounds() {
     for (a, b, t) in sphere::vec3_pairs(&mut rng, 5_000, std::f32::consts::PI) {
         // 2D: the pair projected to the plane and renormalized; Vec3A: the same vectors.
         let (a2, b2) = (a.truncate().normalize(), b.truncate().normalize());
-        let r2 = slerp_vec2(a2, b2, t);
+        let r2 = slerp(a2, b2, t);
         let reference2 = sphere::slerp(
             &f64s(a2.to_array()),
             &f64s(b2.to_array()),
@@ -144,11 +143,11 @@ fn exact_slerp_other_f32_vectors_within_bounds() {
         worst.add(errors(&f64s(r2.to_array()), &reference2), || {
             format!("vec2 {a2:?} {b2:?} {t}")
         });
-        let r3a = slerp_vec3a(Vec3A::from(a), Vec3A::from(b), t);
-        assert_eq!(Vec3::from(r3a), slerp_vec3(a, b, t), "Vec3A and Vec3 agree");
+        let r3a = slerp(Vec3A::from(a), Vec3A::from(b), t);
+        assert_eq!(Vec3::from(r3a), slerp(a, b, t), "Vec3A and Vec3 agree");
         let (a4, b4) = (a.extend(0.0), b.extend(0.0));
-        let r4 = slerp_vec4(a4, b4, t);
-        assert!((r4.truncate() - slerp_vec3(a, b, t)).length() <= 2.0 * SLERP_F32_ANGLE_BOUND);
+        let r4 = slerp(a4, b4, t);
+        assert!((r4.truncate() - slerp(a, b, t)).length() <= 2.0 * SLERP_F32_ANGLE_BOUND);
     }
     println!("vec2 f32: {worst:?}");
     assert!(worst.angle <= f64::from(SLERP_F32_ANGLE_BOUND), "{worst:?}");
@@ -172,7 +171,7 @@ fn exact_slerp_f64_within_bounds() {
             b.as_dvec3().normalize(),
             f64::from(t),
         );
-        let r = slerp_dvec3(a, b, t);
+        let r = slerp(a, b, t);
         let reference = sphere::slerp(
             &a.to_array(),
             &b.to_array(),
@@ -186,7 +185,7 @@ fn exact_slerp_f64_within_bounds() {
         // Quaternions: the same rotation pair in f64.
         let qa = DQuat::from_axis_angle(a, 0.3);
         let qb = DQuat::from_axis_angle(b, 1.9);
-        let q = slerp_dquat(qa, qb, t, QuatPath::AsGiven);
+        let q = slerp_along(qa, qb, t, QuatPath::AsGiven);
         let reference =
             sphere::slerp(&qa.to_array(), &qb.to_array(), t, &[1.0, 0.0, 0.0, 0.0]).expect("unit");
         worst.add(errors(&q.to_array(), &reference), || {
@@ -202,17 +201,17 @@ fn exact_slerp_f64_within_bounds() {
 fn endpoints_are_exact() {
     let mut rng = XorShift::new(0xe9d);
     for (a, b, _) in sphere::quat_pairs(&mut rng, 2_000, std::f32::consts::PI) {
-        assert_eq!(slerp_quat(a, b, 0.0, QuatPath::AsGiven), a);
-        assert_eq!(slerp_quat(a, b, 1.0, QuatPath::AsGiven), b);
+        assert_eq!(slerp_along(a, b, 0.0, QuatPath::AsGiven), a);
+        assert_eq!(slerp_along(a, b, 1.0, QuatPath::AsGiven), b);
         let short_b = if a.dot(b) < 0.0 { -b } else { b };
-        assert_eq!(slerp_quat(a, b, 0.0, QuatPath::Shortest), a);
-        assert_eq!(slerp_quat(a, b, 1.0, QuatPath::Shortest), short_b);
+        assert_eq!(slerp_along(a, b, 0.0, QuatPath::Shortest), a);
+        assert_eq!(slerp_along(a, b, 1.0, QuatPath::Shortest), short_b);
     }
     for (a, b, _) in sphere::vec3_pairs(&mut rng, 2_000, std::f32::consts::PI) {
-        assert_eq!(slerp_vec3(a, b, 0.0), a);
-        assert_eq!(slerp_vec3(a, b, 1.0), b);
+        assert_eq!(slerp(a, b, 0.0), a);
+        assert_eq!(slerp(a, b, 1.0), b);
         assert_eq!(
-            slerp_vec3(a, a, 0.37),
+            slerp(a, a, 0.37),
             a,
             "equal inputs give the input at every t"
         );
@@ -223,7 +222,7 @@ fn endpoints_are_exact() {
 fn short_path_never_turns_more_than_half_a_turn() {
     let mut rng = XorShift::new(0x5407);
     for (a, b, t) in sphere::quat_pairs(&mut rng, 2_000, std::f32::consts::PI) {
-        let q = slerp_quat(a, b, t, QuatPath::Shortest);
+        let q = slerp_along(a, b, t, QuatPath::Shortest);
         // The 4D angle from a grows at most to π/2 (a rotation of at most π).
         let angle = sphere::angle(&f64s(a.to_array()), &f64s(q.to_array())).expect("unit");
         assert!(
@@ -231,7 +230,7 @@ fn short_path_never_turns_more_than_half_a_turn() {
             "{a:?} {b:?} {t}: {angle}"
         );
         // And -b gives the same result: the path does not depend on b's sign.
-        assert_eq!(q, slerp_quat(a, -b, t, QuatPath::Shortest));
+        assert_eq!(q, slerp_along(a, -b, t, QuatPath::Shortest));
     }
 }
 
@@ -269,24 +268,24 @@ fn exactly_opposite_vectors_take_the_documented_axis() {
         Vec3::Z,
         Vec3::new(0.267, -0.534, 0.802).normalize(),
     ] {
-        let mid = slerp_vec3(a, -a, 0.5);
+        let mid = slerp(a, -a, 0.5);
         let axis = a.any_orthonormal_vector();
         assert!(
             (mid - axis).length() <= 2.0 * SLERP_F32_ANGLE_BOUND,
             "{a:?}: {mid:?}"
         );
-        assert!((slerp_vec3(a, -a, 0.25).length() - 1.0).abs() <= SLERP_F32_LENGTH_BOUND);
+        assert!((slerp(a, -a, 0.25).length() - 1.0).abs() <= SLERP_F32_LENGTH_BOUND);
         // Deterministic: bit-identical on every call.
         assert_eq!(
             mid.to_array().map(f32::to_bits),
-            slerp_vec3(a, -a, 0.5).to_array().map(f32::to_bits)
+            slerp(a, -a, 0.5).to_array().map(f32::to_bits)
         );
     }
-    let mid = slerp_vec2(Vec2::new(0.6, 0.8), Vec2::new(-0.6, -0.8), 0.5);
+    let mid = slerp(Vec2::new(0.6, 0.8), Vec2::new(-0.6, -0.8), 0.5);
     assert!((mid - Vec2::new(-0.8, 0.6)).length() <= 2.0 * SLERP_F32_ANGLE_BOUND);
     // Quaternions as given, q to −q: the full turn about q's local z axis.
     let q = Quat::from_rotation_x(0.4);
-    let half = slerp_quat(q, -q, 0.5, QuatPath::AsGiven);
+    let half = slerp_along(q, -q, 0.5, QuatPath::AsGiven);
     assert!(half.angle_between(q * Quat::from_rotation_z(std::f32::consts::PI)) < 1e-6);
 }
 
@@ -295,7 +294,7 @@ fn glam_loses_length_near_antiparallel_where_we_do_not() {
     let mut glam_worst = 0.0f32;
     for case in vector_pairs().filter(|c| c.name.contains("from antiparallel")) {
         for t in PARAMETERS {
-            let ours = slerp_vec3(case.a, case.b, t);
+            let ours = slerp(case.a, case.b, t);
             assert!(
                 (ours.length() - 1.0).abs() <= SLERP_F32_LENGTH_BOUND,
                 "{}",
@@ -310,31 +309,38 @@ fn glam_loses_length_near_antiparallel_where_we_do_not() {
 
 #[test]
 fn try_variants_reject_what_slerp_maps_to_zero() {
+    fn non_finite<T>(what: &'static str) -> Result<T, InterpError> {
+        Err(InterpError::NonFinite { what })
+    }
     for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
         let v = Vec3::new(bad, 0.0, 1.0);
-        assert_eq!(try_slerp_vec3(v, Vec3::X, 0.5), None);
-        assert_eq!(try_slerp_vec3(Vec3::X, v, 0.5), None);
-        assert_eq!(try_slerp_vec3(Vec3::X, Vec3::Y, bad), None);
-        assert_eq!(slerp_vec3(v, Vec3::X, 0.5), Vec3::ZERO);
+        assert_eq!(try_slerp(v, Vec3::X, 0.5), non_finite("a"));
+        assert_eq!(try_slerp(Vec3::X, v, 0.5), non_finite("b"));
+        assert_eq!(try_slerp(Vec3::X, Vec3::Y, bad), non_finite("t"));
+        assert_eq!(slerp(v, Vec3::X, 0.5), Vec3::ZERO);
         let q = Quat::from_xyzw(bad, 0.0, 0.0, 1.0);
         assert_eq!(
-            try_slerp_quat(q, Quat::IDENTITY, 0.5, QuatPath::Shortest),
-            None
+            try_slerp_along(q, Quat::IDENTITY, 0.5, QuatPath::Shortest),
+            non_finite("a")
         );
+        assert_eq!(try_slerp(Quat::IDENTITY, q, 0.5), non_finite("b"));
         assert_eq!(
-            slerp_quat(Quat::IDENTITY, q, 0.5, QuatPath::Shortest),
+            slerp_along(Quat::IDENTITY, q, 0.5, QuatPath::Shortest),
             Quat::from_xyzw(0.0, 0.0, 0.0, 0.0)
         );
     }
-    assert_eq!(try_slerp_vec3(Vec3::ZERO, Vec3::X, 0.5), None);
+    assert_eq!(
+        try_slerp(Vec3::ZERO, Vec3::X, 0.5),
+        Err(InterpError::ZeroLength { what: "a" })
+    );
     // Huge and tiny (subnormal) vectors are directions like any other.
-    let huge = try_slerp_vec3(
+    let huge = try_slerp(
         Vec3::new(3e38, 3e38, 0.0),
         Vec3::new(0.0, 0.0, 1e-40),
         1.0 / 3.0,
     )
     .expect("finite, nonzero inputs");
-    let expected = slerp_vec3(Vec3::new(1.0, 1.0, 0.0).normalize(), Vec3::Z, 1.0 / 3.0);
+    let expected = slerp(Vec3::new(1.0, 1.0, 0.0).normalize(), Vec3::Z, 1.0 / 3.0);
     assert!(
         (huge - expected).length() <= 2.0 * SLERP_F32_ANGLE_BOUND,
         "{huge:?}"
@@ -353,9 +359,9 @@ proptest! {
         t in bits_f32(),
     ) {
         let (a4, b4) = (Vec4::new(a.0, a.1, a.2, a.3), Vec4::new(b.0, b.1, b.2, b.3));
-        let q = slerp_quat(Quat::from_vec4(a4), Quat::from_vec4(b4), t, QuatPath::Shortest);
+        let q = slerp_along(Quat::from_vec4(a4), Quat::from_vec4(b4), t, QuatPath::Shortest);
         prop_assert!(q.is_finite());
-        let v = slerp_vec3(a4.truncate(), b4.truncate(), t);
+        let v = slerp(a4.truncate(), b4.truncate(), t);
         prop_assert!(v.is_finite());
         let valid = a4.truncate().is_finite() && b4.truncate().is_finite() && t.is_finite()
             && a4.truncate() != Vec3::ZERO && b4.truncate() != Vec3::ZERO;
@@ -368,7 +374,7 @@ proptest! {
         }
         let n = interpolate_normal(a4.truncate(), b4.truncate(), t, NormalInterpolation::Renormalize);
         prop_assert!(n.is_finite());
-        let d = slerp_dvec3(a4.truncate().as_dvec3(), b4.truncate().as_dvec3(), f64::from(t));
+        let d = slerp(a4.truncate().as_dvec3(), b4.truncate().as_dvec3(), f64::from(t));
         prop_assert!(d.is_finite());
     }
 }
@@ -482,7 +488,7 @@ fn spacing_error_formula() {
 fn f64_variants_agree_with_f32_on_easy_inputs() {
     let a = DVec3::new(0.6, 0.8, 0.0);
     let b = DVec3::Z;
-    let r = slerp_dvec3(a, b, 0.3);
-    let r32 = slerp_vec3(a.as_vec3(), b.as_vec3(), 0.3);
+    let r = slerp(a, b, 0.3);
+    let r32 = slerp(a.as_vec3(), b.as_vec3(), 0.3);
     assert!((r.as_vec3() - r32).length() < 2.0 * SLERP_F32_ANGLE_BOUND);
 }

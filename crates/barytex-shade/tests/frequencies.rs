@@ -121,21 +121,50 @@ fn h_test_has_no_false_negatives_on_the_sphere() {
 #[test]
 fn vertex_normal_weightings_agree_on_a_sphere() {
     let mesh = barytex_uv::mesh::sphere(24, 12).expect("valid");
-    for weighting in [
-        NormalWeighting::Uniform,
-        NormalWeighting::Area,
-        NormalWeighting::Angle,
+    // The generated mesh duplicates its seam column and its pole vertices (one per column), so a
+    // seam or pole vertex sees only the triangles on one side and its averaged normal leans by
+    // about half a column (7.6–7.9° measured). Weld coincident vertices first: then every
+    // vertex, seams and poles included, has its full ring of triangles.
+    let key = |p: Vec3| (p * 1e5).round().to_array().map(|c| c as i64);
+    let mut first = std::collections::HashMap::new();
+    let welded_index: Vec<u32> = (0..mesh.positions.len())
+        .map(|i| *first.entry(key(mesh.positions[i])).or_insert(i as u32))
+        .collect();
+    let indices: Vec<[u32; 3]> = mesh
+        .indices
+        .iter()
+        .map(|t| t.map(|i| welded_index[i as usize]))
+        .collect();
+    assert!(
+        first.len() < mesh.positions.len(),
+        "the seams were welded: {} of {} vertices",
+        first.len(),
+        mesh.positions.len()
+    );
+    // The exact normal of the unit sphere at p is p. With the 15° facets of a 24 × 12 sphere the
+    // averaged normal is within a few degrees of it at every vertex; the worst cases are next to
+    // the poles, where the triangles above and below a vertex differ most. Measured worst: 1.61°
+    // uniform, 2.63° area-weighted, 0.60° angle-weighted; the bounds leave about 15–65 %
+    // headroom (the mesh is fixed, so only the weighting code can move these) and lie far below
+    // the 7.6–7.9° of the unwelded mesh.
+    for (weighting, bound_degrees) in [
+        (NormalWeighting::Uniform, 2.0f32),
+        (NormalWeighting::Area, 3.0),
+        (NormalWeighting::Angle, 1.0),
     ] {
-        let normals = vertex_normals(&mesh.positions, &mesh.indices, weighting);
-        // The seams are duplicated (unwelded), so compare away from them: the averaged normal
-        // is within a few degrees of the exact one everywhere.
-        let worst = mesh
-            .positions
+        let normals = vertex_normals(&mesh.positions, &indices, weighting);
+        let worst = welded_index
             .iter()
-            .zip(&normals)
-            .map(|(p, n)| p.angle_between(*n))
+            .map(|&i| {
+                let i = i as usize;
+                mesh.positions[i].angle_between(normals[i])
+            })
             .fold(0.0f32, f32::max);
-        assert!(worst < 0.5, "{weighting:?} {worst}");
+        assert!(
+            worst.to_degrees() < bound_degrees,
+            "{weighting:?}: {}° off the exact normal",
+            worst.to_degrees()
+        );
     }
 }
 

@@ -8,7 +8,7 @@ use num_traits::{Signed, Zero};
 
 use crate::exact;
 
-/// `orient3d(a, b, c, d)` is `None` exactly for non-finite input, else the exact rational sign,
+/// `orient3d(a, b, c, d)` is an error exactly for non-finite input, else the exact rational sign,
 /// and it is antisymmetric (swapping `a` and `b` flips it, cycling `b, c, d` keeps it).
 ///
 /// # Errors
@@ -17,23 +17,23 @@ pub fn check_orient3d(a: Vec3, b: Vec3, c: Vec3, d: Vec3) -> Result<(), String> 
     let got = orient3d(a, b, c, d);
     if !(a.is_finite() && b.is_finite() && c.is_finite() && d.is_finite()) {
         return match got {
-            None => Ok(()),
-            Some(o) => Err(format!(
+            Err(_) => Ok(()),
+            Ok(o) => Err(format!(
                 "orient3d({a:?}, {b:?}, {c:?}, {d:?}) = {o:?} for non-finite input"
             )),
         };
     }
     let want = exact::orient3d_sign(a, b, c, d);
     match got {
-        Some(o) if o.sign() == want => {}
+        Ok(o) if o.sign() == want => {}
         other => {
             return Err(format!(
                 "orient3d({a:?}, {b:?}, {c:?}, {d:?}) = {other:?}, exact sign {want}"
             ));
         }
     }
-    let swapped = orient3d(b, a, c, d).map(Orientation::sign);
-    let cycled = orient3d(a, c, d, b).map(Orientation::sign);
+    let swapped = orient3d(b, a, c, d).map(Orientation::sign).ok();
+    let cycled = orient3d(a, c, d, b).map(Orientation::sign).ok();
     if swapped != Some(-want) || cycled != Some(want) {
         return Err(format!(
             "orient3d({a:?}, {b:?}, {c:?}, {d:?}) not antisymmetric: sign {want}, swapped {swapped:?}, cycled {cycled:?}"

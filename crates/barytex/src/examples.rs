@@ -255,7 +255,7 @@ fn kettner_summary(out: &mut impl Write) -> Result {
         collinear += usize::from(want == 0);
         naive += usize::from(orient2d_naive_f32(p, a, b).sign() != want);
         dop += usize::from(orient2d_dop_f32(p, a, b).sign() != want);
-        ours += usize::from(orient2d(p, a, b).map(barytex_interp::Orientation::sign) != Some(want));
+        ours += usize::from(orient2d(p, a, b).map(barytex_interp::Orientation::sign) != Ok(want));
         // The same sign with the differences taken from b (cyclic rotation).
         naive_b += usize::from(orient2d_naive_f32(b, p, a).sign() != want);
         dop_b += usize::from(orient2d_dop_f32(b, p, a).sign() != want);

@@ -9,8 +9,8 @@
 use std::fmt::Write as _;
 
 use barytex_interp::{
-    QuatInterpolation, QuatPath, SLERP_F32_LENGTH_BOUND, interpolate_normal, slerp_quat,
-    slerp_vec3, try_slerp_quat,
+    InterpError, QuatInterpolation, QuatPath, SLERP_F32_LENGTH_BOUND, interpolate_normal, slerp,
+    slerp_along, try_slerp_along,
 };
 use glam::{Quat, Vec4};
 
@@ -45,55 +45,71 @@ pub fn slerp_geometry(bytes: &[u8]) -> (Quat, Quat, f32) {
 
 /// The invariants: every member of the family gives a finite result on any input; valid
 /// inputs give unit-length exact SLERP results (within 4× the stated bound: non-unit inputs are
-/// normalized first) with exact endpoints for unit inputs; invalid inputs give zero / `None`.
+/// normalized first) with exact endpoints for unit inputs; invalid inputs give zero / an error naming the first bad input.
 ///
 /// # Errors
 /// A description of the first violated invariant.
 pub fn check_slerp(bytes: &[u8]) -> Result<(), String> {
     let (a, b, t) = slerp_geometry(bytes);
     for path in [QuatPath::Shortest, QuatPath::AsGiven] {
-        let q = slerp_quat(a, b, t, path);
+        let q = slerp_along(a, b, t, path);
         if !q.is_finite() {
-            return Err(format!("slerp_quat({a:?}, {b:?}, {t}, {path:?}) = {q:?}"));
+            return Err(format!("slerp_along({a:?}, {b:?}, {t}, {path:?}) = {q:?}"));
         }
         let valid = Vec4::from(a).length_squared() > 0.0
             && Vec4::from(b).length_squared() > 0.0
             && a.is_finite()
             && b.is_finite()
             && t.is_finite();
-        let checked = try_slerp_quat(a, b, t, path);
+        let checked = try_slerp_along(a, b, t, path);
         match checked {
-            Some(r) => {
+            Ok(r) => {
                 if r != q {
                     return Err(format!(
-                        "try_slerp_quat {r:?} differs from slerp_quat {q:?}"
+                        "try_slerp_along {r:?} differs from slerp_along {q:?}"
                     ));
                 }
                 if (Vec4::from(r).length() - 1.0).abs() > 4.0 * SLERP_F32_LENGTH_BOUND {
-                    return Err(format!("|slerp_quat({a:?}, {b:?}, {t})| = {}", r.length()));
+                    return Err(format!("|slerp_along({a:?}, {b:?}, {t})| = {}", r.length()));
                 }
             }
-            None if q != Quat::from_xyzw(0.0, 0.0, 0.0, 0.0) => {
+            Err(e) if q != Quat::from_xyzw(0.0, 0.0, 0.0, 0.0) => {
                 return Err(format!(
-                    "None from try_slerp_quat but slerp_quat gave {q:?}"
+                    "{e:?} from try_slerp_along but slerp_along gave {q:?}"
                 ));
             }
-            None if valid && Vec4::from(a).is_finite() => {
+            Err(e) if valid && Vec4::from(a).is_finite() => {
                 // Valid by finiteness but rejected: only a zero vector after all (subnormal
                 // components whose squares underflow are still nonzero, and must work).
-                return Err(format!("valid input rejected: {a:?} {b:?} {t}"));
+                return Err(format!("valid input rejected ({e:?}): {a:?} {b:?} {t}"));
             }
-            None => {}
+            Err(e) => {
+                // The error names the first bad input, in the order t, a, b.
+                let want = if !t.is_finite() {
+                    InterpError::NonFinite { what: "t" }
+                } else if !a.is_finite() {
+                    InterpError::NonFinite { what: "a" }
+                } else if Vec4::from(a) == Vec4::ZERO {
+                    InterpError::ZeroLength { what: "a" }
+                } else if !b.is_finite() {
+                    InterpError::NonFinite { what: "b" }
+                } else {
+                    InterpError::ZeroLength { what: "b" }
+                };
+                if e != want {
+                    return Err(format!("try_slerp_along gave {e:?}, want {want:?}"));
+                }
+            }
         }
         let unit = (a.length_squared() - 1.0).abs() <= 4.0 * f32::EPSILON
             && (b.length_squared() - 1.0).abs() <= 4.0 * f32::EPSILON;
-        if unit && checked.is_some() {
+        if unit && checked.is_ok() {
             let end = if path == QuatPath::Shortest && a.dot(b) < 0.0 {
                 -b
             } else {
                 b
             };
-            if slerp_quat(a, b, 0.0, path) != a || slerp_quat(a, b, 1.0, path) != end {
+            if slerp_along(a, b, 0.0, path) != a || slerp_along(a, b, 1.0, path) != end {
                 return Err(format!("endpoints not exact for {a:?} {b:?} {path:?}"));
             }
         }
@@ -105,9 +121,9 @@ pub fn check_slerp(bytes: &[u8]) -> Result<(), String> {
         }
     }
     let (u, v) = (Vec4::from(a).truncate(), Vec4::from(b).truncate());
-    let s = slerp_vec3(u, v, t);
+    let s = slerp(u, v, t);
     if !s.is_finite() {
-        return Err(format!("slerp_vec3({u:?}, {v:?}, {t}) = {s:?}"));
+        return Err(format!("slerp({u:?}, {v:?}, {t}) = {s:?}"));
     }
     for method in [
         barytex_interp::NormalInterpolation::Renormalize,
@@ -138,7 +154,7 @@ pub fn slerp_code(bytes: &[u8]) -> String {
     let _ = writeln!(out, "    let b = {};", quat_code(b));
     let _ = writeln!(out, "    let t = f32::from_bits({:#010x});", t.to_bits());
     out.push_str("    for path in [QuatPath::Shortest, QuatPath::AsGiven] {\n");
-    out.push_str("        assert!(slerp_quat(a, b, t, path).is_finite());\n    }\n}");
+    out.push_str("        assert!(slerp_along(a, b, t, path).is_finite());\n    }\n}");
     out
 }
 

@@ -3,6 +3,24 @@
 //!
 //! Each case is plain data; the tests compute the exact answer from it with rational arithmetic,
 //! so a case never carries a hard-coded expected float.
+//!
+//! ```
+//! use barytex_interp::hard_cases::{kettner_grid, triangles_2d};
+//! use barytex_interp::{locate_2d, orient2d, Orientation};
+//!
+//! // Where a case pins the location down by construction, the exact predicates agree.
+//! for case in triangles_2d() {
+//!     if let Some(expected) = case.expected {
+//!         assert_eq!(locate_2d(case.point, case.triangle), Ok(expected), "{}", case.name);
+//!     }
+//! }
+//! // Kettner's grid straddles the line y = x: the diagonal is collinear, the rest is not.
+//! for (p, a, b) in kettner_grid(8) {
+//!     let collinear = orient2d(p, a, b)? == Orientation::Collinear;
+//!     assert_eq!(collinear, p.x == p.y);
+//! }
+//! # Ok::<(), barytex_interp::InterpError>(())
+//! ```
 
 use glam::{Vec2, Vec3};
 
@@ -169,7 +187,7 @@ pub fn triangles_2d() -> impl Iterator<Item = TriangleCase> {
             expected: Some(Location::Inside),
         },
         TriangleCase {
-            name: "seed example 9, outside",
+            name: "Denisjuk example 9, outside",
             parameter: 0.0,
             triangle: [v(0.0, 0.0), v(2.0, 3.0), v(3.0, 1.0)],
             point: v(1.0, 0.0),
@@ -208,14 +226,14 @@ pub fn triangles_3d() -> impl Iterator<Item = Triangle3Case> {
     slivers.chain(offsets)
 }
 
-/// The quad table: the seed's Example 10 quad, an exact parallelogram (A = 0, where thresholded
+/// The quad table: Denisjuk's Example 10 quad, an exact parallelogram (A = 0, where thresholded
 /// solvers switch branches), a near-parallelogram, a trapezoid, a sliver, corners of mixed
 /// magnitude (1e-30 beside 1), tiny scales down to 1e-30, subnormal size and offsets 1e4 … 1e7.
 pub fn quads() -> impl Iterator<Item = QuadCase> {
     let example = [v(0.0, 0.0), v(4.0, 0.0), v(5.0, 3.0), v(0.0, 2.0)];
     let fixed = [
         QuadCase {
-            name: "seed example 10",
+            name: "Denisjuk example 10",
             parameter: 0.0,
             quad: example,
             alpha_beta: v(2.0 / 3.0, 1.0 / 3.0),

@@ -83,7 +83,7 @@ fn cos_series(x: f64) -> f64 {
     sum
 }
 
-/// The polygon table: seed 004's quad centre, regular polygons up to 16 sides, nearly collinear
+/// The polygon table: the centre of a quad whose split changes the result, regular polygons up to 16 sides, nearly collinear
 /// consecutive vertices (1e-6 relative and one ulp), points 1e-7 and one ulp from an edge or a
 /// vertex, exactly on edges with inexact parameters and on vertices, scales 1e-20, 1e-30 and
 /// 1e30, offsets 1e6 and 1e7, subnormal and huge coordinates, a sliver quad, a clockwise
@@ -105,7 +105,7 @@ pub fn polygons() -> impl Iterator<Item = PolygonCase> {
     let inside = Some(PolygonLocation::Inside);
     let mut cases = Vec::new();
     cases.push(case(
-        "seed 004 quad centre",
+        "split-dependent quad centre",
         0.0,
         quad.to_vec(),
         v(2.25, 1.25),

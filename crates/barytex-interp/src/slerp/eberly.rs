@@ -81,11 +81,11 @@ impl<const N: usize> Table<N> {
 /// [`QuatInterpolation::angle_bound`](super::QuatInterpolation::angle_bound).
 ///
 /// ```
-/// use barytex_interp::{slerp_eberly_quat, slerp_quat, QuatPath};
+/// use barytex_interp::{slerp, slerp_eberly_quat};
 /// use glam::Quat;
 ///
 /// let (a, b) = (Quat::from_rotation_z(0.3), Quat::from_rotation_y(1.2));
-/// let exact = slerp_quat(a, b, 0.7, QuatPath::Shortest);
+/// let exact = slerp(a, b, 0.7);
 /// // Not renormalized: normalize before measuring the angle (glam's is the rotation angle).
 /// assert!(slerp_eberly_quat::<8>(a, b, 0.7).normalize().angle_between(exact) < 1e-4);
 /// ```

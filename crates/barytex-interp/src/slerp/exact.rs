@@ -1,8 +1,8 @@
-//! Exact SLERP of unit vectors and unit quaternions (seed 003:
+//! Exact SLERP of unit vectors and unit quaternions (Shoemake 1985; Buss 2003, ch. IV:
 //! `n(t) = (sin(θ(1−t))·n₀ + sin(θt)·n₁) / sin θ`), written so that it is accurate for every
 //! angle, including 0 and π, and for every `t`.
 //!
-//! The seed's two-sine formula cancels catastrophically near θ = π (both weights blow up) and
+//! The textbook two-sine formula cancels catastrophically near θ = π (both weights blow up) and
 //! needs a special case at θ = 0. The same curve written in the orthonormal frame of the arc,
 //! `n(t) = cos(tθ)·a + sin(tθ)·e`, with `e` the unit vector along `p = b − (a·b)·a`, has neither
 //! problem, provided `p` is computed without cancellation: `p = n − ((a·n)/(a·a))·a` with
@@ -16,10 +16,11 @@ use glam::{DQuat, DVec2, DVec3, DVec4, Quat, Vec2, Vec3, Vec3A, Vec4};
 use super::short_arc::slerp_short_arc;
 use super::trig::{Libm, Poly, Trig, select};
 use super::unit_vector::{Ops, unit};
-#[allow(unused_imports)] // the doc links of the generated functions
+#[allow(unused_imports)] // doc links
 use super::{
     SLERP_F32_ANGLE_BOUND, SLERP_F32_LENGTH_BOUND, SLERP_F64_ANGLE_BOUND, SLERP_F64_LENGTH_BOUND,
 };
+use crate::InterpError;
 
 /// Which of the two arcs between a quaternion and its neighbour's two representatives `±b` to
 /// take.
@@ -27,7 +28,8 @@ use super::{
 /// `q` and `−q` are the same rotation, so a quaternion SLERP has a choice. `Shortest` (the default,
 /// and what an animation system wants) negates `b` when `a·b < 0`, so the rotation turns by at most
 /// 180°; `AsGiven` interpolates the 4-vectors as they are, which can turn by up to 360° (and
-/// between `q` and `−q`, about the deterministic axis of [`slerp_quat`]).
+/// between `q` and `−q`, about the deterministic axis of [`slerp`]). [`slerp`] takes the short
+/// path; [`slerp_along`] takes either.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum QuatPath {
     /// Negate `b` when `a·b < 0`: the shorter rotation. At `t = 1` the result is then `−b`.
@@ -135,192 +137,306 @@ fn try_slerp_f32<V: Ops<Scalar = f32> + PartialEq, W: Ops<Scalar = f64>>(
     })
 }
 
-macro_rules! vector_slerp {
-    ($v:ty, $s:ty, $slerp:ident, $try_slerp:ident, $entry:expr, $bound:literal, $example:literal) => {
-        #[doc = concat!("SLERP of two unit [`", stringify!($v), "`]s, exact at the ends and unit length everywhere.")]
-        ///
-        /// Returns the point at fraction `t` of the great-circle arc from `a` to `b`:
-        /// `a` at `t = 0` and `b` at `t = 1` bit for bit, constant angular speed in between, and
-        /// `t` outside `[0, 1]` continues along the same great circle (extrapolation). The arc is
-        /// written in its orthonormal frame, `cos(tθ)·a + sin(tθ)·p̂` with `p` the part of `b`
-        /// perpendicular to `a` and `θ = atan2(|p|, a·b)`, accurate at every angle, so nearly
-        /// opposite vectors stay on the unit sphere (glam's `Vec3::slerp` loses up to 18 % of the
-        /// length within 0.06° of opposite). The f32 functions compute in f64; arcs up to 90° with
-        /// `t ∈ [0, 1]` use Eberly's series with 16 balanced factors, whose error is below the
-        /// f32 rounding of the result.
-        ///
-        /// Inputs that are not unit length are normalized first (inputs within `4·ε` of unit
-        /// squared length are used as given, so the endpoints stay exact); huge and tiny vectors
-        /// normalize without overflow.
-        ///
-        /// # Special values
-        /// - `a == b`: `a` for every `t`.
-        /// - `a` and `b` in opposite directions (to rounding): the arc through the
-        ///   deterministic perpendicular of `a` — the
-        ///   counter-clockwise perpendicular in 2D, glam's `any_orthonormal_vector` in 3D,
-        ///   `(y, −x, w, −z)` in 4D.
-        /// - A zero or non-finite input, or a non-finite `t`: the zero vector (use the `try_`
-        ///   variant to get `None` instead). Never NaN, never panics.
-        ///
-        /// # Accuracy
-        /// For unit inputs and `t` in `[0, 1]`: angle to the exact SLERP (computed in higher
-        #[doc = concat!("precision) within ", $bound, " (tests `exact_slerp_*` in `tests/slerp.rs`).")]
-        ///
-        /// ```
-        #[doc = $example]
-        /// ```
-        #[must_use]
-        #[inline]
-        pub fn $slerp(a: $v, b: $v, t: $s) -> $v {
-            $try_slerp(a, b, t).unwrap_or(<$v>::ZERO)
+/// Why a checked SLERP entry returned `None`: the first bad input in the order `t`, `a`, `b`.
+#[cold]
+fn rejected<V: Ops>(a: V, b: V, t_is_finite: bool) -> InterpError {
+    if !t_is_finite {
+        return InterpError::NonFinite { what: "t" };
+    }
+    for (what, v) in [("a", a), ("b", b)] {
+        if !v.all_finite() {
+            return InterpError::NonFinite { what };
         }
+        if unit(v).is_none() {
+            return InterpError::ZeroLength { what };
+        }
+    }
+    // Not reached: the entries fail only for the inputs above.
+    InterpError::ZeroLength { what: "a" }
+}
 
-        #[doc = concat!("[`", stringify!($slerp), "`], or `None` when `a` or `b` is zero or not finite, or `t` is not finite.")]
-        ///
-        /// # Accuracy
-        #[doc = concat!("As [`", stringify!($slerp), "`].")]
-        #[must_use]
-        #[inline]
-        pub fn $try_slerp(a: $v, b: $v, t: $s) -> Option<$v> {
-            let entry: fn($v, $v, $s) -> Option<$v> = $entry;
-            entry(a, b, t)
+mod sealed {
+    /// Closes the set of [`Slerp`](super::Slerp) types.
+    pub trait Sealed {}
+
+    /// Passed to the hidden methods of [`Slerp`](super::Slerp) and
+    /// [`SlerpAlong`](super::SlerpAlong): only this crate can make one, so only the crate's free
+    /// functions call them.
+    #[derive(Clone, Copy, Debug)]
+    pub struct Token(pub(super) ());
+}
+
+use sealed::Token;
+
+/// The types [`slerp`] and [`try_slerp`] accept: [`Vec2`], [`Vec3`], [`Vec3A`], [`Vec4`] and
+/// [`Quat`] (f32), [`DVec2`], [`DVec3`], [`DVec4`] and [`DQuat`] (f64).
+///
+/// Implemented for these glam types only (the trait is sealed); call the free functions. (glam's
+/// inherent `Vec3::slerp` is a different algorithm, inexact near opposite vectors, and
+/// `Vec3::slerp(a, b, t)` names it, not this.)
+pub trait Slerp: Copy + sealed::Sealed {
+    /// The parameter's type: `f32` for the f32 types, `f64` for the `D` types.
+    type Scalar: Copy;
+    /// The zero vector or quaternion: [`slerp`]'s result for bad input.
+    #[doc(hidden)]
+    fn zero(_: Token) -> Self;
+    /// [`slerp`], `None` for bad input.
+    #[doc(hidden)]
+    fn checked(a: Self, b: Self, t: Self::Scalar, _: Token) -> Option<Self>;
+    /// Why [`checked`](Self::checked) returned `None`.
+    #[doc(hidden)]
+    fn rejected(a: Self, b: Self, t: Self::Scalar, _: Token) -> InterpError;
+}
+
+/// The quaternion types [`slerp_along`] and [`try_slerp_along`] accept: [`Quat`] and [`DQuat`].
+pub trait SlerpAlong: Slerp {
+    /// [`slerp_along`], `None` for bad input.
+    #[doc(hidden)]
+    fn checked_along(a: Self, b: Self, t: Self::Scalar, path: QuatPath, _: Token) -> Option<Self>;
+}
+
+/// SLERP of two unit vectors or unit quaternions, exact at the ends and unit length everywhere.
+///
+/// Returns the point at fraction `t` of the great-circle arc from `a` to `b` (Shoemake,
+/// "Animating rotation with quaternion curves", SIGGRAPH 1985; Buss, *3D Computer Graphics*,
+/// 2003, §IV.6: `(sin((1 − t)θ)·a + sin(tθ)·b) / sin θ`): `a` at `t = 0` and `b` at `t = 1` bit
+/// for bit, constant angular speed in between, and `t` outside `[0, 1]` continues along the same
+/// great circle (extrapolation). For every [`Slerp`] type: the f32 vectors [`Vec2`], [`Vec3`],
+/// [`Vec3A`], [`Vec4`], the f64 vectors [`DVec2`], [`DVec3`], [`DVec4`], and the quaternions
+/// [`Quat`] and [`DQuat`] on the short path ([`slerp_along`] chooses the path).
+///
+/// The arc is written in its orthonormal frame, `cos(tθ)·a + sin(tθ)·p̂` with `p` the part of `b`
+/// perpendicular to `a` and `θ = atan2(|p|, a·b)`, accurate at every angle, so nearly opposite
+/// vectors stay on the unit sphere (glam's `Vec3::slerp` loses up to 18 % of the length within
+/// 0.06° of opposite), and there is no `acos` near 1 and no threshold switching to nlerp. The f32
+/// types compute in f64; arcs up to 90° with `t ∈ [0, 1]` use Eberly's series with 16 balanced
+/// factors, whose error is below the f32 rounding of the result.
+///
+/// Inputs that are not unit length are normalized first (inputs within `4·ε` of unit squared
+/// length are used as given, so the endpoints stay exact); huge and tiny vectors normalize
+/// without overflow.
+///
+/// # Special values
+/// - `a == b`: `a` for every `t`.
+/// - `a` and `b` in opposite directions (to rounding): the arc through the deterministic
+///   perpendicular of `a` — the counter-clockwise perpendicular in 2D, glam's
+///   `any_orthonormal_vector` in 3D, `(y, −x, w, −z)` in 4D (for a quaternion `a` on the
+///   [`QuatPath::AsGiven`] path: the full turn about the local z axis of `a`, through `a·k`).
+/// - Quaternions: `b` is negated when `a·b < 0` (then `t = 1` returns `−b` exactly).
+/// - A zero or non-finite input, or a non-finite `t`: the zero vector or quaternion
+///   ([`try_slerp`] says why instead). Never NaN, never panics.
+///
+/// # Accuracy
+/// For unit inputs and `t` in `[0, 1]`, the angle to the exact SLERP (computed in higher
+/// precision) is within [`SLERP_F32_ANGLE_BOUND`] radians and the length within
+/// [`SLERP_F32_LENGTH_BOUND`] of 1 for the f32 types; within [`SLERP_F64_ANGLE_BOUND`] and
+/// [`SLERP_F64_LENGTH_BOUND`] for the f64 types. For quaternions the angle is the 4D angle (the
+/// rotation angle error is twice it). Tests `exact_slerp_*` in `tests/slerp.rs`.
+///
+/// ```
+/// use barytex_interp::slerp;
+/// use glam::{DQuat, DVec2, Quat, Vec2, Vec3, Vec3A, Vec4};
+///
+/// let mid = slerp(Vec2::X, Vec2::Y, 0.5);
+/// assert!((mid - Vec2::splat(0.5f32.sqrt())).length() < 1e-7);
+/// // Exactly opposite: the arc through the counter-clockwise perpendicular of `a`.
+/// assert!((slerp(Vec2::X, -Vec2::X, 0.5) - Vec2::Y).length() < 1e-7);
+///
+/// let n = slerp(Vec3::X, Vec3::Z, 1.0 / 3.0);
+/// assert!((n.angle_between(Vec3::X) - std::f32::consts::FRAC_PI_6).abs() < 1e-6);
+/// assert_eq!(slerp(Vec3::X, Vec3::Z, 1.0), Vec3::Z);
+/// assert!((slerp(Vec3A::X, Vec3A::Y, 0.5).length() - 1.0).abs() < 3e-7);
+/// assert_eq!(slerp(Vec4::X, Vec4::W, 0.0), Vec4::X);
+/// let mid = slerp(DVec2::X, DVec2::Y, 0.5);
+/// assert!((mid - DVec2::splat(0.5f64.sqrt())).length() < 1e-15);
+///
+/// let (a, b) = (Quat::from_rotation_z(0.0), Quat::from_rotation_z(1.0));
+/// let q = slerp(a, b, 0.25);
+/// assert!(q.angle_between(Quat::from_rotation_z(0.25)) < 1e-6);
+/// // The short path: -b is the same rotation, the result the same quaternion.
+/// assert_eq!(slerp(a, -b, 0.25), q);
+/// // Extrapolation, in f64.
+/// let q = slerp(DQuat::from_rotation_x(0.5), DQuat::from_rotation_x(2.5), 2.0);
+/// assert!(q.angle_between(DQuat::from_rotation_x(4.5)) < 1e-14);
+/// ```
+#[must_use]
+#[inline]
+pub fn slerp<V: Slerp>(a: V, b: V, t: V::Scalar) -> V {
+    V::checked(a, b, t, Token(())).unwrap_or_else(|| V::zero(Token(())))
+}
+
+/// [`slerp`], or why it cannot be computed.
+///
+/// # Errors
+/// The first bad input in the order `t`, `a`, `b`: [`InterpError::NonFinite`] (`what` is `"t"`,
+/// `"a"` or `"b"`) for a NaN or infinite one, [`InterpError::ZeroLength`] (`"a"` or `"b"`) for
+/// a zero vector or quaternion. [`slerp`] returns zero for exactly these inputs.
+///
+/// # Accuracy
+/// As [`slerp`].
+///
+/// ```
+/// use barytex_interp::{slerp, try_slerp, InterpError};
+/// use glam::{DVec3, Vec3};
+///
+/// assert_eq!(try_slerp(DVec3::ZERO, DVec3::X, 0.5), Err(InterpError::ZeroLength { what: "a" }));
+/// assert_eq!(slerp(DVec3::ZERO, DVec3::X, 0.5), DVec3::ZERO);
+/// assert_eq!(try_slerp(Vec3::X, Vec3::Y, f32::NAN), Err(InterpError::NonFinite { what: "t" }));
+/// assert_eq!(try_slerp(Vec3::X, Vec3::Y, 1.0), Ok(Vec3::Y));
+/// ```
+#[inline]
+pub fn try_slerp<V: Slerp>(a: V, b: V, t: V::Scalar) -> Result<V, InterpError> {
+    V::checked(a, b, t, Token(())).ok_or_else(|| V::rejected(a, b, t, Token(())))
+}
+
+/// [`slerp`] of unit quaternions along the chosen [`QuatPath`].
+///
+/// [`QuatPath::Shortest`] is [`slerp`]; [`QuatPath::AsGiven`] interpolates the 4-vectors as they
+/// are, which can turn by up to 360° (and between `q` and `−q` turns about the local z axis of
+/// `q`, through the quaternion `q·k`).
+///
+/// # Special values
+/// As [`slerp`]: zero for a zero or non-finite input or a non-finite `t`, never NaN.
+///
+/// # Accuracy
+/// As [`slerp`] (tests `exact_slerp_quat_within_bounds` and `exact_slerp_f64_within_bounds`).
+///
+/// ```
+/// use barytex_interp::{slerp, slerp_along, QuatPath};
+/// use glam::Quat;
+///
+/// let (a, b) = (Quat::IDENTITY, -Quat::from_rotation_y(0.5));
+/// assert_eq!(slerp_along(a, b, 0.4, QuatPath::Shortest), slerp(a, b, 0.4));
+/// // As given, the arc from the identity to −b turns the long way: by 2π − 0.5 in all.
+/// let long = slerp_along(a, b, 0.5, QuatPath::AsGiven);
+/// let expected = Quat::from_rotation_y(0.25 - std::f32::consts::PI);
+/// assert!(long.dot(expected).abs() > 1.0 - 1e-6);
+/// assert_eq!(slerp_along(a, b, 1.0, QuatPath::AsGiven), b);
+/// ```
+#[must_use]
+#[inline]
+pub fn slerp_along<Q: SlerpAlong>(a: Q, b: Q, t: Q::Scalar, path: QuatPath) -> Q {
+    Q::checked_along(a, b, t, path, Token(())).unwrap_or_else(|| Q::zero(Token(())))
+}
+
+/// [`slerp_along`], or why it cannot be computed.
+///
+/// # Errors
+/// As [`try_slerp`].
+///
+/// # Accuracy
+/// As [`slerp`].
+///
+/// ```
+/// use barytex_interp::{try_slerp_along, InterpError, QuatPath};
+/// use glam::Quat;
+///
+/// let zero = Quat::from_xyzw(0.0, 0.0, 0.0, 0.0);
+/// let r = try_slerp_along(Quat::IDENTITY, zero, 0.5, QuatPath::AsGiven);
+/// assert_eq!(r, Err(InterpError::ZeroLength { what: "b" }));
+/// ```
+#[inline]
+pub fn try_slerp_along<Q: SlerpAlong>(
+    a: Q,
+    b: Q,
+    t: Q::Scalar,
+    path: QuatPath,
+) -> Result<Q, InterpError> {
+    Q::checked_along(a, b, t, path, Token(())).ok_or_else(|| Q::rejected(a, b, t, Token(())))
+}
+
+macro_rules! vector_slerp {
+    ($v:ty, $s:ty, $entry:expr) => {
+        impl sealed::Sealed for $v {}
+
+        impl Slerp for $v {
+            type Scalar = $s;
+            #[inline]
+            fn zero(_: Token) -> Self {
+                <$v>::ZERO
+            }
+            #[inline]
+            fn checked(a: Self, b: Self, t: $s, _: Token) -> Option<Self> {
+                let entry: fn($v, $v, $s) -> Option<$v> = $entry;
+                entry(a, b, t)
+            }
+            fn rejected(a: Self, b: Self, t: $s, _: Token) -> InterpError {
+                rejected(a, b, t.is_finite())
+            }
         }
     };
 }
 
-vector_slerp!(
-    Vec2,
-    f32,
-    slerp_vec2,
-    try_slerp_vec2,
-    |a, b, t| try_slerp_f32(a, b, t, Vec2::as_dvec2, |w: DVec2| w.as_vec2()),
-    "[`SLERP_F32_ANGLE_BOUND`] radians, length within [`SLERP_F32_LENGTH_BOUND`] of 1",
-    "use barytex_interp::slerp_vec2;\nuse glam::Vec2;\n\nlet mid = slerp_vec2(Vec2::X, Vec2::Y, 0.5);\nassert!((mid - Vec2::splat(0.5f32.sqrt())).length() < 1e-7);\n// Exactly opposite: the arc through the counter-clockwise perpendicular of `a`.\nassert!((slerp_vec2(Vec2::X, -Vec2::X, 0.5) - Vec2::Y).length() < 1e-7);"
-);
-vector_slerp!(
-    Vec3,
-    f32,
-    slerp_vec3,
-    try_slerp_vec3,
-    |a, b, t| try_slerp_f32(a, b, t, Vec3::as_dvec3, |w: DVec3| w.as_vec3()),
-    "[`SLERP_F32_ANGLE_BOUND`] radians, length within [`SLERP_F32_LENGTH_BOUND`] of 1",
-    "use barytex_interp::slerp_vec3;\nuse glam::Vec3;\n\nlet n = slerp_vec3(Vec3::X, Vec3::Z, 1.0 / 3.0);\nassert!((n.angle_between(Vec3::X) - std::f32::consts::FRAC_PI_6).abs() < 1e-6);\nassert_eq!(slerp_vec3(Vec3::X, Vec3::Z, 1.0), Vec3::Z);"
-);
-vector_slerp!(
-    Vec3A,
-    f32,
-    slerp_vec3a,
-    try_slerp_vec3a,
-    |a, b, t| try_slerp_f32(a, b, t, Vec3A::as_dvec3, |w: DVec3| Vec3A::from(
-        w.as_vec3()
-    )),
-    "[`SLERP_F32_ANGLE_BOUND`] radians, length within [`SLERP_F32_LENGTH_BOUND`] of 1",
-    "use barytex_interp::slerp_vec3a;\nuse glam::Vec3A;\n\nlet n = slerp_vec3a(Vec3A::X, Vec3A::Y, 0.5);\nassert!((n.length() - 1.0).abs() < 3e-7);"
-);
-vector_slerp!(
-    Vec4,
-    f32,
-    slerp_vec4,
-    try_slerp_vec4,
-    |a, b, t| try_slerp_f32(a, b, t, Vec4::as_dvec4, |w: DVec4| w.as_vec4()),
-    "[`SLERP_F32_ANGLE_BOUND`] radians, length within [`SLERP_F32_LENGTH_BOUND`] of 1",
-    "use barytex_interp::slerp_vec4;\nuse glam::Vec4;\n\nassert_eq!(slerp_vec4(Vec4::X, Vec4::W, 0.0), Vec4::X);"
-);
-vector_slerp!(
-    DVec2,
-    f64,
-    slerp_dvec2,
-    try_slerp_dvec2,
-    try_slerp_f64,
-    "[`SLERP_F64_ANGLE_BOUND`] radians, length within [`SLERP_F64_LENGTH_BOUND`] of 1",
-    "use barytex_interp::slerp_dvec2;\nuse glam::DVec2;\n\nlet mid = slerp_dvec2(DVec2::X, DVec2::Y, 0.5);\nassert!((mid - DVec2::splat(0.5f64.sqrt())).length() < 1e-15);"
-);
-vector_slerp!(
-    DVec3,
-    f64,
-    slerp_dvec3,
-    try_slerp_dvec3,
-    try_slerp_f64,
-    "[`SLERP_F64_ANGLE_BOUND`] radians, length within [`SLERP_F64_LENGTH_BOUND`] of 1",
-    "use barytex_interp::{slerp_dvec3, try_slerp_dvec3};\nuse glam::DVec3;\n\nassert_eq!(try_slerp_dvec3(DVec3::ZERO, DVec3::X, 0.5), None);\nassert_eq!(slerp_dvec3(DVec3::ZERO, DVec3::X, 0.5), DVec3::ZERO);"
-);
-vector_slerp!(
-    DVec4,
-    f64,
-    slerp_dvec4,
-    try_slerp_dvec4,
-    try_slerp_f64,
-    "[`SLERP_F64_ANGLE_BOUND`] radians, length within [`SLERP_F64_LENGTH_BOUND`] of 1",
-    "use barytex_interp::slerp_dvec4;\nuse glam::DVec4;\n\nassert_eq!(slerp_dvec4(DVec4::X, DVec4::Y, 1.0), DVec4::Y);"
-);
+vector_slerp!(Vec2, f32, |a, b, t| try_slerp_f32(
+    a,
+    b,
+    t,
+    Vec2::as_dvec2,
+    |w: DVec2| w.as_vec2()
+));
+vector_slerp!(Vec3, f32, |a, b, t| try_slerp_f32(
+    a,
+    b,
+    t,
+    Vec3::as_dvec3,
+    |w: DVec3| w.as_vec3()
+));
+vector_slerp!(Vec3A, f32, |a, b, t| try_slerp_f32(
+    a,
+    b,
+    t,
+    Vec3A::as_dvec3,
+    |w: DVec3| Vec3A::from(w.as_vec3())
+));
+vector_slerp!(Vec4, f32, |a, b, t| try_slerp_f32(
+    a,
+    b,
+    t,
+    Vec4::as_dvec4,
+    |w: DVec4| w.as_vec4()
+));
+vector_slerp!(DVec2, f64, try_slerp_f64);
+vector_slerp!(DVec3, f64, try_slerp_f64);
+vector_slerp!(DVec4, f64, try_slerp_f64);
 
 macro_rules! quat_slerp {
-    ($q:ty, $v:ty, $s:ty, $slerp:ident, $try_slerp:ident, $entry:expr, $bound:literal, $example:literal) => {
-        #[doc = concat!("SLERP of two unit [`", stringify!($q), "`]s: exact at the ends, unit length, never NaN.")]
-        ///
-        /// With [`QuatPath::Shortest`] `b` is negated when `a·b < 0` (then `t = 1` returns `−b`
-        /// exactly); with [`QuatPath::AsGiven`] the 4-vectors are interpolated as they are.
-        /// `t` outside `[0, 1]` extrapolates along the same great circle, also for nearly equal
-        /// rotations (glam #356). The algorithm is that of [`slerp_vec4`]: the arc in its
-        /// orthonormal frame with `θ = atan2(|p|, a·b)` (f32: the short arc by Eberly's balanced
-        /// series in f64), so there is no `acos` near 1 and no threshold switching to nlerp.
-        ///
-        /// # Special values
-        /// - Non-unit inputs are normalized first (inputs within `4·ε` of unit squared length are
-        ///   used as given).
-        /// - `a == −b` with [`QuatPath::AsGiven`]: the full turn about the local z axis of `a`
-        ///   (through the quaternion `a·k`).
-        /// - A zero or non-finite input, or a non-finite `t`: the zero quaternion (the `try_`
-        ///   variant gives `None`). Never NaN, never panics.
-        ///
-        /// # Accuracy
-        /// For unit inputs and `t` in `[0, 1]`: 4D angle to the exact SLERP (computed in higher
-        #[doc = concat!("precision) within ", $bound, "; the rotation angle error is twice the 4D angle")]
-        /// (tests `exact_slerp_*` in `tests/slerp.rs`).
-        ///
-        /// ```
-        #[doc = $example]
-        /// ```
-        #[must_use]
-        #[inline]
-        pub fn $slerp(a: $q, b: $q, t: $s, path: QuatPath) -> $q {
-            $try_slerp(a, b, t, path).unwrap_or(<$q>::from_xyzw(0.0, 0.0, 0.0, 0.0))
+    ($q:ty, $v:ty, $s:ty, $entry:expr) => {
+        impl sealed::Sealed for $q {}
+
+        impl Slerp for $q {
+            type Scalar = $s;
+            #[inline]
+            fn zero(_: Token) -> Self {
+                <$q>::from_xyzw(0.0, 0.0, 0.0, 0.0)
+            }
+            #[inline]
+            fn checked(a: Self, b: Self, t: $s, token: Token) -> Option<Self> {
+                Self::checked_along(a, b, t, QuatPath::Shortest, token)
+            }
+            fn rejected(a: Self, b: Self, t: $s, _: Token) -> InterpError {
+                rejected(<$v>::from(a), <$v>::from(b), t.is_finite())
+            }
         }
 
-        #[doc = concat!("[`", stringify!($slerp), "`], or `None` when `a` or `b` is zero or not finite, or `t` is not finite.")]
-        ///
-        /// # Accuracy
-        #[doc = concat!("As [`", stringify!($slerp), "`].")]
-        #[must_use]
-        #[inline]
-        pub fn $try_slerp(a: $q, b: $q, t: $s, path: QuatPath) -> Option<$q> {
-            let entry: fn($v, $v, $s) -> Option<$v> = $entry;
-            let (a, mut b) = (<$v>::from(a), <$v>::from(b));
-            if path == QuatPath::Shortest && a.dot(b) < 0.0 {
-                b = -b;
+        impl SlerpAlong for $q {
+            #[inline]
+            fn checked_along(a: Self, b: Self, t: $s, path: QuatPath, _: Token) -> Option<Self> {
+                let entry: fn($v, $v, $s) -> Option<$v> = $entry;
+                let (a, mut b) = (<$v>::from(a), <$v>::from(b));
+                if path == QuatPath::Shortest && a.dot(b) < 0.0 {
+                    b = -b;
+                }
+                entry(a, b, t).map(<$q>::from_vec4)
             }
-            entry(a, b, t).map(<$q>::from_vec4)
         }
     };
 }
 
-quat_slerp!(
-    Quat,
-    Vec4,
-    f32,
-    slerp_quat,
-    try_slerp_quat,
-    |a, b, t| try_slerp_f32(a, b, t, Vec4::as_dvec4, |w: DVec4| w.as_vec4()),
-    "[`SLERP_F32_ANGLE_BOUND`] radians, length within [`SLERP_F32_LENGTH_BOUND`] of 1",
-    "use barytex_interp::{slerp_quat, QuatPath};\nuse glam::Quat;\n\nlet a = Quat::from_rotation_z(0.0);\nlet b = Quat::from_rotation_z(1.0);\nlet q = slerp_quat(a, b, 0.25, QuatPath::Shortest);\nassert!(q.angle_between(Quat::from_rotation_z(0.25)) < 1e-6);\n// The short path: -b is the same rotation, the result the same quaternion.\nassert_eq!(slerp_quat(a, -b, 0.25, QuatPath::Shortest), q);"
-);
-quat_slerp!(
-    DQuat,
-    DVec4,
-    f64,
-    slerp_dquat,
-    try_slerp_dquat,
-    try_slerp_f64,
-    "[`SLERP_F64_ANGLE_BOUND`] radians, length within [`SLERP_F64_LENGTH_BOUND`] of 1",
-    "use barytex_interp::{slerp_dquat, QuatPath};\nuse glam::DQuat;\n\nlet a = DQuat::from_rotation_x(0.5);\nlet b = DQuat::from_rotation_x(2.5);\nlet q = slerp_dquat(a, b, 2.0, QuatPath::Shortest); // extrapolation\nassert!(q.angle_between(DQuat::from_rotation_x(4.5)) < 1e-14);"
-);
+quat_slerp!(Quat, Vec4, f32, |a, b, t| try_slerp_f32(
+    a,
+    b,
+    t,
+    Vec4::as_dvec4,
+    |w: DVec4| w.as_vec4()
+));
+quat_slerp!(DQuat, DVec4, f64, try_slerp_f64);

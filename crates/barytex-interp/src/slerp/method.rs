@@ -4,8 +4,8 @@
 use glam::Quat;
 
 use super::eberly::slerp_eberly_quat;
-use super::exact::{QuatPath, slerp_quat};
-use super::nlerp::{nlerp_corrected_quat, nlerp_quat};
+use super::exact::slerp;
+use super::nlerp::{NlerpCorrection, nlerp_corrected_quat, nlerp_quat};
 
 /// A way to interpolate unit quaternions on the short path, from exact to cheap.
 ///
@@ -31,13 +31,13 @@ use super::nlerp::{nlerp_corrected_quat, nlerp_quat};
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum QuatInterpolation {
-    /// [`slerp_quat`] on the short path: exact to rounding.
+    /// [`slerp`] (on the short path): exact to rounding.
     Slerp,
     /// [`nlerp_quat`]: on the arc, not at constant speed.
     Nlerp,
-    /// [`nlerp_corrected_quat`] with Kapoulkine's quadratic `k(d)`.
+    /// [`nlerp_corrected_quat`] with [`NlerpCorrection::Fast`], Kapoulkine's quadratic `k(d)`.
     NlerpCorrectedFast,
-    /// [`nlerp_corrected_quat`] with Kapoulkine's `t`-dependent fit.
+    /// [`nlerp_corrected_quat`] with [`NlerpCorrection::Precise`], Kapoulkine's `t`-dependent fit.
     NlerpCorrected,
     /// [`slerp_eberly_quat`] with `terms` factors, clamped to `1 ..= 16`.
     Eberly {
@@ -90,10 +90,10 @@ impl QuatInterpolation {
     #[inline]
     pub fn interpolate(self, a: Quat, b: Quat, t: f32) -> Quat {
         match self {
-            Self::Slerp => slerp_quat(a, b, t, QuatPath::Shortest),
+            Self::Slerp => slerp(a, b, t),
             Self::Nlerp => nlerp_quat(a, b, t),
-            Self::NlerpCorrectedFast => nlerp_corrected_quat(a, b, t, false),
-            Self::NlerpCorrected => nlerp_corrected_quat(a, b, t, true),
+            Self::NlerpCorrectedFast => nlerp_corrected_quat(a, b, t, NlerpCorrection::Fast),
+            Self::NlerpCorrected => nlerp_corrected_quat(a, b, t, NlerpCorrection::Precise),
             Self::Eberly { terms } => eberly(terms, a, b, t),
         }
     }

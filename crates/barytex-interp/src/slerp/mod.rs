@@ -3,8 +3,8 @@
 //!
 //! | need | items |
 //! |---|---|
-//! | exact, total, f32 and f64 | [`slerp_vec2`], [`slerp_vec3`], [`slerp_vec3a`], [`slerp_vec4`], [`slerp_dvec2`], [`slerp_dvec3`], [`slerp_dvec4`], [`slerp_quat`], [`slerp_dquat`] and their `try_` variants |
-//! | fast quaternion approximations | [`nlerp_quat`], [`nlerp_corrected_quat`], [`slerp_eberly_quat`] |
+//! | exact, total, f32 and f64 | [`slerp`] and [`try_slerp`] for every [`Slerp`] type (`Vec2`, `Vec3`, `Vec3A`, `Vec4`, `Quat` and their `D` twins); [`slerp_along`] and [`try_slerp_along`] for quaternions on a chosen [`QuatPath`] |
+//! | fast quaternion approximations | [`nlerp_quat`], [`nlerp_corrected_quat`] with [`NlerpCorrection`], [`slerp_eberly_quat`] |
 //! | pick by speed against error | [`QuatInterpolation`] with its `angle_bound` / `length_bound` |
 //! | normals | [`interpolate_normal`], [`NormalInterpolation`], [`renormalize_spacing_error`] |
 
@@ -18,14 +18,9 @@ mod trig;
 mod unit_vector;
 
 pub use eberly::{EBERLY_MAX_TERMS, slerp_eberly_quat};
-pub use exact::{
-    QuatPath, slerp_dquat, slerp_dvec2, slerp_dvec3, slerp_dvec4, slerp_quat, slerp_vec2,
-    slerp_vec3, slerp_vec3a, slerp_vec4, try_slerp_dquat, try_slerp_dvec2, try_slerp_dvec3,
-    try_slerp_dvec4, try_slerp_quat, try_slerp_vec2, try_slerp_vec3, try_slerp_vec3a,
-    try_slerp_vec4,
-};
+pub use exact::{QuatPath, Slerp, SlerpAlong, slerp, slerp_along, try_slerp, try_slerp_along};
 pub use method::QuatInterpolation;
-pub use nlerp::{nlerp_corrected_quat, nlerp_quat};
+pub use nlerp::{NlerpCorrection, nlerp_corrected_quat, nlerp_quat};
 pub use normals::{NormalInterpolation, interpolate_normal, renormalize_spacing_error};
 
 /// Largest angle (radians) between an f32 exact SLERP result and the true SLERP of its (unit)

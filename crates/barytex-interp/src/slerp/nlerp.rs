@@ -50,21 +50,37 @@ pub fn nlerp_quat(a: Quat, b: Quat, t: f32) -> Quat {
     normalized_lerp(a, b, t)
 }
 
-/// Which of Kapoulkine's two fits of the corrected `t`.
+/// Which of Kapoulkine's two fits of the corrected `t` [`nlerp_corrected_quat`] uses.
+///
+/// ```
+/// use barytex_interp::{nlerp_corrected_quat, slerp, NlerpCorrection, QuatInterpolation};
+/// use glam::Quat;
+///
+/// let (a, b) = (Quat::IDENTITY, Quat::from_rotation_x(2.0));
+/// let exact = slerp(a, b, 0.3);
+/// // glam's `angle_between` is the rotation angle, twice the 4D angle of the bounds.
+/// let fast = nlerp_corrected_quat(a, b, 0.3, NlerpCorrection::Fast).angle_between(exact);
+/// assert!(fast <= 2.0 * QuatInterpolation::NlerpCorrectedFast.angle_bound());
+/// let precise = nlerp_corrected_quat(a, b, 0.3, NlerpCorrection::Precise).angle_between(exact);
+/// assert!(precise <= 2.0 * QuatInterpolation::NlerpCorrected.angle_bound());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub(crate) enum Correction {
-    /// `k(d)` quadratic: `t' = t + t(t − ½)(t − 1)·k(d)`.
+pub enum NlerpCorrection {
+    /// `k(d)` quadratic: `t' = t + t(t − ½)(t − 1)·k(d)`; the 4D angle to the exact SLERP is
+    /// within the bound of
+    /// [`QuatInterpolation::NlerpCorrectedFast`](super::QuatInterpolation::NlerpCorrectedFast).
     Fast,
-    /// `k(t, d) = A(d)·(t − ½)² + B(d)` with `A` cubic and `B` quadratic in `d`.
+    /// `k(t, d) = A(d)·(t − ½)² + B(d)` with `A` cubic and `B` quadratic in `d`; within
+    /// [`QuatInterpolation::NlerpCorrected`](super::QuatInterpolation::NlerpCorrected)'s bound.
     Precise,
 }
 
 /// Kapoulkine's reparametrized `t` for nlerp at `d = a·b ∈ [0, 1]`.
 #[inline]
-pub(crate) fn corrected_t(t: f32, d: f32, correction: Correction) -> f32 {
+pub(crate) fn corrected_t(t: f32, d: f32, correction: NlerpCorrection) -> f32 {
     let k = match correction {
-        Correction::Fast => 0.931_872 + d * (-1.256_54 + d * 0.331_442),
-        Correction::Precise => {
+        NlerpCorrection::Fast => 0.931_872 + d * (-1.256_54 + d * 0.331_442),
+        NlerpCorrection::Precise => {
             let a = 1.0904 + d * (-3.2452 + d * (3.556_45 - d * 1.435_19));
             let b = 0.848_013 + d * (-1.060_21 + d * 0.215_638);
             let c = t - 0.5;
@@ -77,35 +93,33 @@ pub(crate) fn corrected_t(t: f32, d: f32, correction: Correction) -> f32 {
 /// nlerp with Kapoulkine's corrected parameter: nearly constant speed for a few more
 /// multiply-adds.
 ///
-/// `precise = false` uses his quadratic fit `k(d)`, `precise = true` the fit that also depends on
-/// `t`. Both are fitted for `t` in `[0, 1]`; outside it the result still lies on the arc, with a
-/// larger speed error.
+/// [`NlerpCorrection::Fast`] uses his quadratic fit `k(d)`, [`NlerpCorrection::Precise`] the fit
+/// that also depends on `t`. Both are fitted for `t` in `[0, 1]`; outside it the result still
+/// lies on the arc, with a larger speed error.
 ///
 /// # Special values
 /// Unit inputs are assumed (not checked); a non-finite input gives the zero quaternion. Never NaN.
 ///
 /// # Accuracy
-/// 4D angle to the exact SLERP within the `angle_bound` of [`QuatInterpolation::NlerpCorrected`](super::QuatInterpolation::NlerpCorrected)
-/// (5.4e-3 rad fast, 5.0e-4 precise) for `t` in `[0, 1]`, length within 2.4e-7 of 1 (test
+/// 4D angle to the exact SLERP within the `angle_bound` of
+/// [`QuatInterpolation::NlerpCorrectedFast`](super::QuatInterpolation::NlerpCorrectedFast) or
+/// [`QuatInterpolation::NlerpCorrected`](super::QuatInterpolation::NlerpCorrected) (5.4e-3 rad
+/// fast, 5.0e-4 precise) for `t` in `[0, 1]`, length within 2.4e-7 of 1 (test
 /// `approximation_bounds` in `tests/slerp.rs`).
 ///
 /// ```
-/// use barytex_interp::{nlerp_corrected_quat, slerp_quat, QuatPath};
+/// use barytex_interp::{nlerp_corrected_quat, slerp, NlerpCorrection};
 /// use glam::Quat;
 ///
 /// let (a, b) = (Quat::IDENTITY, Quat::from_rotation_x(2.0));
-/// let exact = slerp_quat(a, b, 0.3, QuatPath::Shortest);
-/// assert!(nlerp_corrected_quat(a, b, 0.3, true).angle_between(exact) < 2e-4);
+/// let exact = slerp(a, b, 0.3);
+/// let q = nlerp_corrected_quat(a, b, 0.3, NlerpCorrection::Precise);
+/// assert!(q.angle_between(exact) < 2e-4);
 /// ```
 #[must_use]
 #[inline]
-pub fn nlerp_corrected_quat(a: Quat, b: Quat, t: f32, precise: bool) -> Quat {
+pub fn nlerp_corrected_quat(a: Quat, b: Quat, t: f32, correction: NlerpCorrection) -> Quat {
     let a = Vec4::from(a);
     let (b, d) = short_path(a, Vec4::from(b));
-    let correction = if precise {
-        Correction::Precise
-    } else {
-        Correction::Fast
-    };
     normalized_lerp(a, b, corrected_t(t, d, correction))
 }

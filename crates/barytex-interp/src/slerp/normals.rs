@@ -1,14 +1,15 @@
-//! Interpolating normals for Phong shading (seed 003): lerp and renormalize, or SLERP.
+//! Interpolating normals for Phong shading (Phong 1975): lerp and renormalize, or SLERP.
 //!
 //! Renormalized lerp stays on the great-circle arc but does not move along it at constant speed:
 //! at angle θ between the normals it reaches `atan2(t·sin θ, 1 − t + t·cos θ)` instead of `t·θ`
-//! (the seed's "does not produce even spacing"). [`renormalize_spacing_error`] gives that error;
+//! (it "does not produce even spacing", in Schaefer's shading lecture; Shoemake 1985 for the
+//! constant-speed alternative). [`renormalize_spacing_error`] gives that error;
 //! for the small angles between the vertex normals of a finely tessellated mesh it is tiny, for a
 //! coarse mesh it is not.
 
 use glam::Vec3;
 
-use super::exact::slerp_vec3;
+use super::exact::slerp;
 
 /// How [`interpolate_normal`] moves from one normal to the other.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -16,7 +17,7 @@ pub enum NormalInterpolation {
     /// Lerp, then renormalize: cheap, uneven angular spacing (see [`renormalize_spacing_error`]).
     #[default]
     Renormalize,
-    /// [`slerp_vec3`]: even spacing, exact ends, a few times the cost.
+    /// [`slerp`]: even spacing, exact ends, a few times the cost.
     Slerp,
 }
 
@@ -25,10 +26,10 @@ pub enum NormalInterpolation {
 /// # Special values
 /// Zero or non-finite normals give the zero vector; with `Renormalize`, opposite normals at
 /// `t = ½` give the zero vector too (their lerp vanishes), with `Slerp` the deterministic
-/// perpendicular of [`slerp_vec3`]. Never NaN.
+/// perpendicular of [`slerp`]. Never NaN.
 ///
 /// # Accuracy
-/// `Slerp`: as [`slerp_vec3`]. `Renormalize`: angle to the evenly spaced normal within
+/// `Slerp`: as [`slerp`]. `Renormalize`: angle to the evenly spaced normal within
 /// [`renormalize_spacing_error`]`(θ)` plus 2.4e-7 (test `normal_spacing` in `tests/slerp.rs`).
 ///
 /// ```
@@ -44,7 +45,7 @@ pub enum NormalInterpolation {
 pub fn interpolate_normal(n0: Vec3, n1: Vec3, t: f32, method: NormalInterpolation) -> Vec3 {
     match method {
         NormalInterpolation::Renormalize => (n0 + (n1 - n0) * t).normalize_or_zero(),
-        NormalInterpolation::Slerp => slerp_vec3(n0, n1, t),
+        NormalInterpolation::Slerp => slerp(n0, n1, t),
     }
 }
 

@@ -132,7 +132,9 @@ mod tests {
         let f = Footprint::new(Vec2::new(16.0 / 64.0, 0.0), Vec2::ZERO, (64, 64)).expect("finite");
         let e = f.ewa_ellipse(8.0);
         assert_eq!(e.lod, 1.0);
-        assert!((e.axis1 * 64.0).length() - 2.0 < 1e-6);
+        // The 16-texel major axis stays; the zero minor axis becomes 16 / 8 = 2 texels.
+        assert!(((e.axis0 * 64.0).length() - 16.0).abs() < 1e-5, "{e:?}");
+        assert!(((e.axis1 * 64.0).length() - 2.0).abs() < 1e-6, "{e:?}");
         assert!((e.axis0.dot(e.axis1)).abs() < 1e-9);
     }
 }

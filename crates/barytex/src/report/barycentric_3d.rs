@@ -64,7 +64,7 @@ impl Method {
             Self::PrecomputedQuery | Self::PrecomputedWithSetup => {
                 PrecomputedTriangle3::new(tri).map_or([f32::NAN; 3], |pre| pre.weights(p))
             }
-            Self::Default => barycentric_3d(p, tri).unwrap_or([f32::NAN; 3]),
+            Self::Default => barycentric_3d(p, tri).map_or([f32::NAN; 3], |b| b.weights),
         }
     }
 

@@ -42,7 +42,9 @@ impl Method {
         match self {
             Self::Naive => Some(orient2d_naive_f32(a, b, c).sign()),
             Self::Dop => Some(orient2d_dop_f32(a, b, c).sign()),
-            Self::Default => orient2d(a, b, c).map(barytex_interp::Orientation::sign),
+            Self::Default => orient2d(a, b, c)
+                .map(barytex_interp::Orientation::sign)
+                .ok(),
             Self::Robust => {
                 let det = robust_orient2d(a, b, c);
                 Some(if det > 0.0 {

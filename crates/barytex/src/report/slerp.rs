@@ -6,8 +6,7 @@ use std::fmt::Write as _;
 
 use barytex_interp::hard_cases::vector_pairs;
 use barytex_interp::{
-    NormalInterpolation, QuatInterpolation, interpolate_normal, renormalize_spacing_error,
-    slerp_vec3,
+    NormalInterpolation, QuatInterpolation, interpolate_normal, renormalize_spacing_error, slerp,
 };
 use barytex_testkit::seeded::XorShift;
 use barytex_testkit::sphere;
@@ -192,7 +191,7 @@ fn vector_table(settings: Settings) -> Table {
     };
     let mut extra = Vec::new();
     let methods: [(&str, bool, VecMethod); 4] = [
-        ("slerp_vec3", true, slerp_vec3),
+        ("slerp (Vec3)", true, slerp),
         ("interpolate_normal(Renormalize)", false, |a, b, t| {
             interpolate_normal(a, b, t, NormalInterpolation::Renormalize)
         }),
