@@ -43,7 +43,10 @@ pub fn fixtures_dir() -> Option<std::path::PathBuf> {
             std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/fixtures")
         });
     if !dir.is_dir() {
-        println!("note: fixtures folder {} absent, test skipped", dir.display());
+        println!(
+            "note: fixtures folder {} absent, test skipped",
+            dir.display()
+        );
         return None;
     }
     Some(dir)
