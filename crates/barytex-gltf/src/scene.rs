@@ -113,8 +113,9 @@ pub struct Scene {
     pub decode_seconds: f64,
     /// An equirectangular environment panorama (linear light; `barytex_uv`'s equirect
     /// convention, −Z at the centre, +Y at the top) that lit materials reflect in proportion to
-    /// their smoothness — seed 000's environment mapping. glTF has no such slot: files load
-    /// with `None`; code (the demo) sets it.
+    /// their smoothness: environment mapping (J. F. Blinn, M. E. Newell, "Texture and reflection
+    /// in computer generated images", *Communications of the ACM* 19(10), 1976). glTF has no such
+    /// slot: files load with `None`; code (the demo) sets it.
     pub environment: Option<Arc<AnyTexture2d>>,
 }
 

@@ -1,6 +1,6 @@
 //! The built-in demo scene (what `barytex` renders with no arguments), built in code: no files.
 //!
-//! It shows the seeds at a glance: a checkerboard floor receding to the horizon (where aliasing,
+//! It shows the techniques at a glance: a checkerboard floor receding to the horizon (where aliasing,
 //! mipmaps and anisotropic filtering differ most), a sphere with the equirectangular mapping, a
 //! capped cylinder with the cylindrical mapping, a torus with its (u, v) parametrisation, each
 //! with a texture that makes the mapping's distortion and seams visible, the torus also
@@ -76,7 +76,8 @@ fn stripes(side: u32) -> SceneImage {
 
 /// A tangent-space normal map (linear RGB, glTF's convention) of the bumps
 /// `h(u, v) = sin(2π·16u)·sin(2π·8v)`: the torus gets bumps its silhouette does not show
-/// (seed 002's bump mapping, through glTF's normal texture).
+/// (bump mapping, J. F. Blinn, "Simulation of wrinkled surfaces", *SIGGRAPH '78*, through glTF's
+/// normal texture).
 fn bumps(side: u32) -> SceneImage {
     let texture = Texture2d::from_fn(side, side, |x, y| {
         let (u, v) = (
