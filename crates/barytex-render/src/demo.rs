@@ -232,6 +232,19 @@ pub const DEMO_FOG: f32 = 0.04;
 
 /// The options `barytex` renders the demo with: anisotropic filtering (8 probes), 4× MSAA,
 /// Blinn–Phong, fog in the background colour.
+///
+/// ```
+/// use barytex_render::demo::{DEMO_FOG, demo_options};
+/// use barytex_render::{AntiAliasing, Filter, RenderOptions};
+///
+/// let options = demo_options(320, 180);
+/// assert_eq!((options.width, options.height), (320, 180));
+/// assert_eq!((options.filter, options.anti_aliasing), (Filter::Anisotropic(8), AntiAliasing::Msaa(4)));
+/// // The fog fades into the background colour.
+/// let fog = options.fog.unwrap();
+/// assert_eq!(fog.density, DEMO_FOG);
+/// assert_eq!(fog.colour, RenderOptions::default().background.truncate());
+/// ```
 #[must_use]
 pub fn demo_options(width: u32, height: u32) -> RenderOptions {
     let defaults = RenderOptions::default();
@@ -251,6 +264,20 @@ pub fn demo_options(width: u32, height: u32) -> RenderOptions {
 
 /// The demo scene. (The generated meshes use fixed, valid resolutions; were one ever refused,
 /// it would be left empty rather than panic — the tests would catch it.)
+///
+/// ```
+/// use barytex_render::demo::{demo_options, demo_scene};
+/// use barytex_render::{CameraSource, render};
+///
+/// let scene = demo_scene();
+/// assert_eq!(scene.lights.len(), 3); // sun, point and spot
+/// assert!(scene.environment.is_some());
+/// // The demo brings its own camera; a tiny render looks through it.
+/// let out = render(&scene, &demo_options(24, 16))?;
+/// assert_eq!(out.camera.source, CameraSource::Scene(0));
+/// assert_eq!(out.stats.triangles, scene.triangle_count());
+/// # Ok::<(), barytex_render::RenderError>(())
+/// ```
 #[must_use]
 pub fn demo_scene() -> Scene {
     let images = vec![
