@@ -1,6 +1,6 @@
 //! The built-in demo scene (what `barytex` renders with no arguments), built in code: no files.
 //!
-//! It shows the techniques at a glance: a checkerboard floor receding to the horizon (where aliasing,
+//! At a glance: a checkerboard floor receding to the horizon (where aliasing,
 //! mipmaps and anisotropic filtering differ most), a sphere with the equirectangular mapping, a
 //! capped cylinder with the cylindrical mapping, a torus with its (u, v) parametrisation, each
 //! with a texture that makes the mapping's distortion and seams visible, the torus also
