@@ -148,8 +148,9 @@ pub fn locate_2d(p: Vec2, tri: [Vec2; 3]) -> Result<Location, InterpError> {
 ///
 /// # Accuracy
 /// Each weight is within 1 ulp of the exact rational value, whatever the triangle's shape,
-/// scale or offset (a weight beyond f32's range is the infinity of its sign). The bar of
-/// REFERENCES.md is `4 ulp + 2⁻²⁴·κ` with `κ = max(|p|, |a|, |b|, |c|) · max edge / |2·area|`
+/// scale or offset (a weight beyond f32's range is the infinity of its sign). The project's
+/// accuracy bar (`docs/ACCURACY.md`) is `4 ulp + 2⁻²⁴·κ` with
+/// `κ = max(|p|, |a|, |b|, |c|) · max edge / |2·area|`
 /// (tests `barycentric_2d_within_bar`, `barycentric_2d_within_bar_scaled`, `total_on_any_bits`
 /// and `hard_cases_within_bar`).
 ///

@@ -1,12 +1,21 @@
-//! The reference renderer: a flattened [`Scene`] (loaded by barytex-gltf, or
-//! the built-in [`demo`] scene) drawn by barytex-raster with barytex-texture's
-//! filters — cameras (the scene's or the automatic one), glTF materials (base colour, vertex
-//! colours, alpha modes, emission, occlusion, unlit), punctual lights with Blinn–Phong, and
-//! every anti-aliasing mode of the rasterizer.
+//! The reference renderer: a flattened [`Scene`] (loaded by barytex-gltf, or the built-in
+//! [`demo`] scene) drawn by barytex-raster — cameras (the scene's or the automatic one), glTF
+//! materials (base colour, vertex colours, alpha modes, emission, occlusion, normal maps, unlit),
+//! punctual lights, fog, and every anti-aliasing mode of the rasterizer.
 //!
-//! It models only what the image needs: textures are prepared only for materials the scene
-//! draws, mip chains are built only for textures that end up minified on screen, and the
-//! statistics say what was skipped.
+//! It composes the workspace's seams and re-implements none of them: every texel is looked up
+//! through a barytex-uv [`UvMapping`](barytex_uv::UvMapping) (the material's uv set with
+//! `KHR_texture_transform`, or the environment's direction) and a barytex-texture
+//! [`Sampler`](barytex_texture::Sampler); every light is a barytex-shade
+//! [`Light`](barytex_shade::Light) evaluated by [`PhongMaterial::shade`](barytex_shade::PhongMaterial::shade)
+//! with the normalized Blinn–Phong lobe, under every shading mode.
+//!
+//! A render runs in three stages a reader can follow: *prepare* (camera, world-space geometry,
+//! textures, lights, and the per-polygon work of flat and hybrid shading), *passes* (one draw per
+//! item and shading frequency, per anti-aliasing pass), and *stats* ([`RenderStats`]). It models
+//! only what the image needs: textures are prepared only for materials the scene draws, mip
+//! chains are built only for textures that end up minified on screen, and the statistics say
+//! what was skipped.
 //!
 //! ```
 //! use barytex_render::{render, RenderOptions};

@@ -64,9 +64,10 @@ pub fn blinn_phong_specular(n: Vec3, l: Vec3, v: Vec3, shininess: f32) -> f32 {
 /// The energy-normalized Blinn lobe times the cosine of incidence,
 /// `(n + 8)/(8π) · max(N·H, 0)^n · (N·L)` for unit `n`, `l`, `v` ([`Specular::NormalizedBlinnPhong`]).
 ///
-/// Zero when `N·L ≤ 0` or `L = −V`; never negative; NaN input gives 0. Unlike the classic lobes
-/// it is not bounded by 1: the normalization makes the lobe integrate to at most 1 over the
-/// hemisphere, so its peak grows with `n`.
+/// Zero when `N·L ≤ 0` or `L = −V`; never negative; NaN input, and a result that would not be
+/// finite (an infinite exponent or normal), give 0. Unlike the classic lobes it is not bounded by
+/// 1: the normalization makes the lobe integrate to at most 1 over the hemisphere, so its peak
+/// grows with `n`.
 ///
 /// ```
 /// use barytex_shade::normalized_blinn_phong_specular;

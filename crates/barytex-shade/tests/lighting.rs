@@ -77,14 +77,20 @@ fn light() -> impl Strategy<Value = Light> {
     ]
 }
 
+/// Materials with the classic lobes, bounded by 1 (the energy bounds below hold for them).
 fn material() -> impl Strategy<Value = PhongMaterial> {
+    material_with(&[Specular::Phong, Specular::BlinnPhong, Specular::None])
+}
+
+/// Materials with any of `lobes`.
+fn material_with(lobes: &'static [Specular]) -> impl Strategy<Value = PhongMaterial> {
     (
         colour(),
         colour(),
         colour(),
         colour(),
         0.0f32..300.0,
-        0..3u8,
+        0..lobes.len(),
     )
         .prop_map(
             |(emission, ambient, diffuse, specular, shininess, lobe)| PhongMaterial {
@@ -93,14 +99,14 @@ fn material() -> impl Strategy<Value = PhongMaterial> {
                 diffuse,
                 specular,
                 shininess,
-                lobe: [Specular::Phong, Specular::BlinnPhong, Specular::None][lobe as usize],
+                lobe: lobes[lobe],
             },
         )
 }
 
 proptest! {
     #[test]
-    fn no_negative_light(m in material(), lights in prop::collection::vec(light(), 0..4),
+    fn no_negative_light(m in material_with(&[Specular::Phong, Specular::BlinnPhong, Specular::NormalizedBlinnPhong, Specular::None]), lights in prop::collection::vec(light(), 0..4),
                          n in unit(), v in unit(), p in (-3.0f32..3.0, -3.0f32..3.0, -3.0f32..3.0),
                          ambient in colour()) {
         let p = Vec3::new(p.0, p.1, p.2);
@@ -290,6 +296,67 @@ fn attenuation_formula() {
     assert_eq!(Attenuation::NONE.factor(f32::INFINITY), 1.0);
     assert_eq!(Attenuation::INVERSE_SQUARE.factor(0.5), 1.0);
     assert_eq!(Attenuation::INVERSE_SQUARE.factor(4.0), 1.0 / 16.0);
+}
+
+/// glTF's falloff: `1/d²` (not capped) inside the range, windowed by `1 − (d/r)⁴` to exactly 0
+/// at the range; no range (or a meaningless one) is infinite; bad distances give 0, never NaN.
+#[test]
+fn punctual_attenuation_follows_khr_lights_punctual() {
+    let open = Attenuation::Punctual { range: None };
+    assert_eq!(open.factor(0.5), 4.0);
+    assert_eq!(open.factor(2.0), 0.25);
+    assert_eq!(open.factor(0.0), 1e8);
+    let ranged = Attenuation::Punctual { range: Some(10.0) };
+    assert_eq!(ranged.factor(5.0), (1.0 - 0.0625) / 25.0);
+    assert_eq!(ranged.factor(10.0), 0.0);
+    assert_eq!(ranged.factor(1e6), 0.0);
+    for range in [Some(0.0), Some(-1.0), Some(f32::NAN)] {
+        assert_eq!(
+            Attenuation::Punctual { range }.factor(2.0),
+            0.25,
+            "{range:?}"
+        );
+    }
+    for d in [f32::NAN, -1.0, f32::INFINITY, f32::NEG_INFINITY] {
+        assert_eq!(open.factor(d), 0.0, "{d}");
+        assert_eq!(ranged.factor(d), 0.0, "{d}");
+    }
+    // A point light through it: intensity 4 at distance 2 is 1.
+    let lamp = Light::Point {
+        position: Vec3::new(0.0, 2.0, 0.0),
+        color: Vec3::splat(4.0),
+        attenuation: open,
+    };
+    assert_eq!(
+        lamp.sample(Vec3::ZERO).expect("regular").intensity,
+        Vec3::ONE
+    );
+}
+
+/// The normalized Blinn–Phong lobe: its peak is `(n + 8)/(8π)` times `N·L`, it vanishes for light
+/// from behind, and it is never negative or NaN.
+#[test]
+fn normalized_blinn_phong_lobe() {
+    let peak = Specular::NormalizedBlinnPhong.factor(Vec3::Z, Vec3::Z, Vec3::Z, 32.0);
+    assert!(
+        (peak - 40.0 / (8.0 * std::f32::consts::PI)).abs() < 1e-6,
+        "{peak}"
+    );
+    // Light at 60° from the normal, the eye on the mirror ray: the lobe's peak times cos 60°.
+    let l = Vec3::new(3.0_f32.sqrt() / 2.0, 0.0, 0.5);
+    let v = Vec3::new(-l.x, 0.0, l.z);
+    let tilted = Specular::NormalizedBlinnPhong.factor(Vec3::Z, l, v, 32.0);
+    assert!((tilted - 0.5 * peak).abs() < 1e-5, "{tilted}");
+    assert_eq!(
+        Specular::NormalizedBlinnPhong.factor(Vec3::Z, -Vec3::Z, Vec3::Z, 32.0),
+        0.0
+    );
+    for bad in [Vec3::NAN, Vec3::ZERO, Vec3::INFINITY] {
+        let f = Specular::NormalizedBlinnPhong.factor(bad, Vec3::Z, Vec3::Z, 32.0);
+        assert!(f >= 0.0 && f.is_finite(), "{bad:?}: {f}");
+    }
+    let huge = Specular::NormalizedBlinnPhong.factor(Vec3::Z, Vec3::Z, Vec3::Z, f32::INFINITY);
+    assert!(huge >= 0.0 && huge.is_finite(), "{huge}");
 }
 
 #[test]

@@ -5,7 +5,6 @@
 
 use barytex_testkit::seeded::XorShift;
 use barytex_testkit::strategies::bits_f32;
-use barytex_uv::PositionMapping;
 use barytex_uv::environment::{
     CUBE_ROUND_TRIP_BOUND, CubeFace, EQUIRECT_ROUND_TRIP_BOUND, EnvironmentMap, EnvironmentMapping,
     Lookup, OCTAHEDRAL_ROUND_TRIP_BOUND, SPHERE_MAP_ROUND_TRIP_BOUND, cube_direction, cube_face_uv,
@@ -13,6 +12,7 @@ use barytex_uv::environment::{
     octahedral_decode, octahedral_encode, octahedral_uv_and_jacobian, reflect, reflect_normalized,
     sphere_map_direction, sphere_map_uv, sphere_map_uv_and_jacobian,
 };
+use barytex_uv::{PositionMapping, SurfacePoint, UvMapping};
 use glam::{DVec2, DVec3, Vec2, Vec3};
 use proptest::prelude::*;
 
@@ -401,11 +401,22 @@ proptest! {
         prop_assert_eq!((jn.du, jn.dv), (Vec3::ZERO, Vec3::ZERO));
         let uv = map.uv(n).expect("defined");
         prop_assert!((jn.uv - uv).abs().max_element() <= 1e-6);
+        // Looking the reflected ray up as a direction gives the same coordinate, and the chain
+        // rule through the direction's own derivatives.
+        let direct = EnvironmentMapping { map, lookup: Lookup::Direction };
+        let jd = direct.uv_and_jacobian(r, Vec3::ZERO).expect("defined");
+        let jr = map.uv_and_direction_jacobian(r).expect("defined");
+        prop_assert_eq!(jd, jr);
+        prop_assert!((jd.uv - j.uv).abs().max_element() <= 1e-6);
+        let (dx, dy) = (Vec3::new(1e-3, 0.0, 0.0), Vec3::new(0.0, 0.0, -1e-3));
+        let sample = direct.map(&SurfacePoint::with_derivatives(r, Vec3::ZERO, dx, dy)).expect("finite");
+        prop_assert_eq!(sample.duvdx, Vec2::new(jr.du.dot(dx), jr.dv.dot(dx)));
+        prop_assert_eq!(sample.duvdy, Vec2::new(jr.du.dot(dy), jr.dv.dot(dy)));
     }
 
     #[test]
     fn mapping_is_total(map in map(), p in any_vec3(), n in any_vec3(), eye in any_vec3()) {
-        for lookup in [Lookup::Normal, Lookup::Reflect { eye }] {
+        for lookup in [Lookup::Normal, Lookup::Reflect { eye }, Lookup::Direction] {
             let mapping = EnvironmentMapping { map, lookup };
             if let Some(j) = mapping.uv_and_jacobian(p, n) {
                 prop_assert!(j.uv.is_finite() && j.du.is_finite() && j.dv.is_finite());

@@ -240,7 +240,11 @@ pub fn check_environment(bytes: &[u8]) -> Result<(), String> {
         check_direction(raw)?;
     }
     for map in EnvironmentMap::ALL {
-        for lookup in [Lookup::Normal, Lookup::Reflect { eye: w }] {
+        for lookup in [
+            Lookup::Normal,
+            Lookup::Reflect { eye: w },
+            Lookup::Direction,
+        ] {
             let mapping = EnvironmentMapping { map, lookup };
             let position = uv.extend(0.0);
             if let Some(j) = mapping.uv_and_jacobian(position, d)

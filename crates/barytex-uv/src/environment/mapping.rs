@@ -1,5 +1,6 @@
-//! Environment maps behind the [`UvMapping`] seam: the direction is the surface normal, or the
-//! view vector reflected about it, and the Jacobian is chained through the reflection.
+//! Environment maps behind the [`UvMapping`](crate::UvMapping) seam: the direction is the
+//! surface normal, the view vector reflected about it (the Jacobian chained through the
+//! reflection), or a direction given per pixel.
 
 use glam::{Vec2, Vec3};
 
@@ -106,7 +107,7 @@ pub enum Lookup {
     Direction,
 }
 
-/// An environment map as a [`UvMapping`]: the coordinate of the direction chosen by `lookup`
+/// An environment map as a [`UvMapping`](crate::UvMapping) (through [`PositionMapping`]): the coordinate of the direction chosen by `lookup`
 /// in `map`, with its gradients with respect to the position, the normal held fixed.
 ///
 /// For [`Lookup::Reflect`], with `v = (e − p)/L`, `L = |e − p|`, `P = I − vvᵀ` and
