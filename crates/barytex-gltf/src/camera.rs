@@ -36,6 +36,21 @@ pub enum Projection {
 impl Projection {
     /// The projection matrix exactly as the glTF specification's appendix writes it (OpenGL clip
     /// space, z in [−1, 1]); `viewport_aspect` is used when the camera does not fix its own.
+    ///
+    /// ```
+    /// use barytex_gltf::Projection;
+    /// use glam::Vec4;
+    ///
+    /// // An infinite perspective: the near plane maps to NDC z = −1, the viewport sets the aspect.
+    /// let p = Projection::Perspective { yfov: 1.0, aspect_ratio: None, znear: 0.5, zfar: None };
+    /// let m = p.matrix(2.0);
+    /// let clip = m * Vec4::new(0.0, 0.0, -0.5, 1.0);
+    /// assert_eq!(clip.z / clip.w, -1.0);
+    /// assert_eq!(m.x_axis.x * 2.0, m.y_axis.y);
+    /// // Orthographic: the corner (xmag, ymag) at the far plane maps to (1, 1, 1).
+    /// let o = Projection::Orthographic { xmag: 2.0, ymag: 1.0, znear: 0.0, zfar: 10.0 };
+    /// assert_eq!(o.matrix(1.0) * Vec4::new(2.0, 1.0, -10.0, 1.0), Vec4::ONE);
+    /// ```
     #[must_use]
     pub fn matrix(&self, viewport_aspect: f32) -> Mat4 {
         match *self {
@@ -156,6 +171,20 @@ impl Projection {
 }
 
 /// A camera placed in the flattened scene.
+///
+/// ```
+/// use barytex_gltf::{LoadOptions, Projection, load_slice};
+/// use glam::Vec3;
+///
+/// let gltf = br#"{"asset": {"version": "2.0"},
+///   "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+///   "nodes": [{"camera": 0, "translation": [0, 1, 5]}], "scenes": [{"nodes": [0]}]}"#;
+/// let scene = load_slice(gltf, &LoadOptions::default())?;
+/// let camera = &scene.cameras[0];
+/// assert!(matches!(camera.projection, Projection::Perspective { zfar: None, .. }));
+/// assert_eq!(camera.world.transform_point3(Vec3::ZERO), Vec3::new(0.0, 1.0, 5.0));
+/// # Ok::<(), barytex_gltf::SceneError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct SceneCamera {
     /// Index of the node carrying it.

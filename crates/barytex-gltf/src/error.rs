@@ -61,6 +61,19 @@ impl SceneError {
     }
 
     /// The JSON pointer of the object at fault, when the error names one.
+    ///
+    /// ```
+    /// use barytex_gltf::{LoadOptions, SceneError, load_slice};
+    ///
+    /// // The node refers to mesh 3, which does not exist.
+    /// let bad = br#"{"asset": {"version": "2.0"}, "nodes": [{"mesh": 3}]}"#;
+    /// let err = load_slice(bad, &LoadOptions::default()).unwrap_err();
+    /// assert!(matches!(err, SceneError::Invalid { .. }));
+    /// assert_eq!(err.pointer(), Some("/nodes/0/mesh"));
+    /// // A malformed container names no object.
+    /// let glb = b"glTF\x02\x00\x00\x00\x0c\x00\x00\x00";
+    /// assert_eq!(load_slice(glb, &LoadOptions::default()).unwrap_err().pointer(), None);
+    /// ```
     #[must_use]
     pub fn pointer(&self) -> Option<&str> {
         match self {

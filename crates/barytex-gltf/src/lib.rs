@@ -69,6 +69,20 @@ pub use scene::{MeshInstance, Scene, SceneImage, SceneStats, Texture};
 pub use topology::Topology;
 
 /// How to load.
+///
+/// ```
+/// use barytex_gltf::{LoadOptions, SceneError, load_slice};
+///
+/// // Two scenes; the document's `scene` picks the second unless the options say otherwise.
+/// let gltf = r#"{"asset": {"version": "2.0"}, "scene": 1,
+///   "nodes": [{"name": "a"}, {"name": "b"}, {"name": "c"}],
+///   "scenes": [{"name": "first", "nodes": [0]}, {"name": "second", "nodes": [1, 2]}]}"#;
+/// let default = load_slice(gltf.as_bytes(), &LoadOptions::default())?;
+/// assert_eq!((default.scene_index, default.name.as_deref()), (Some(1), Some("second")));
+/// let first = load_slice(gltf.as_bytes(), &LoadOptions { scene: Some(0), ..LoadOptions::default() })?;
+/// assert_eq!((first.stats.nodes_visited, first.scene_count), (1, 2));
+/// # Ok::<(), SceneError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LoadOptions {
     /// Size limits for untrusted input.
@@ -106,6 +120,22 @@ fn guarded(f: impl FnOnce() -> Result<Scene, SceneError>) -> Result<Scene, Scene
 ///
 /// # Errors
 /// Any [`SceneError`]: malformed container or JSON, an invalid object, a limit exceeded.
+///
+/// ```
+/// use barytex_gltf::{LoadOptions, SceneError, load_slice};
+///
+/// // A buffer the loader cannot reach without a folder to resolve it in.
+/// let external = br#"{"asset": {"version": "2.0"},
+///   "buffers": [{"byteLength": 36, "uri": "triangle.bin"}]}"#;
+/// let err = load_slice(external, &LoadOptions::default()).unwrap_err();
+/// assert_eq!(err.pointer(), Some("/buffers/0/uri"));
+/// // Not glTF at all.
+/// assert!(matches!(load_slice(b"{", &LoadOptions::default()), Err(SceneError::Json(_))));
+/// // A document with nothing to draw loads as an empty scene.
+/// let empty = load_slice(br#"{"asset": {"version": "2.0"}}"#, &LoadOptions::default())?;
+/// assert_eq!(empty.triangle_count(), 0);
+/// # Ok::<(), SceneError>(())
+/// ```
 pub fn load_slice(bytes: &[u8], options: &LoadOptions) -> Result<Scene, SceneError> {
     guarded(|| document::load(bytes, None, false, options))
 }
@@ -114,6 +144,30 @@ pub fn load_slice(bytes: &[u8], options: &LoadOptions) -> Result<Scene, SceneErr
 ///
 /// # Errors
 /// As [`load_slice`], plus [`SceneError::Io`] for a missing external file.
+///
+/// ```
+/// use barytex_gltf::{LoadOptions, SceneError, load_slice_with_base};
+///
+/// // The triangle's positions in an external .bin next to where the JSON "lives".
+/// let dir = std::env::temp_dir().join(format!("barytex-doc-base-{}", std::process::id()));
+/// std::fs::create_dir_all(&dir).map_err(|e| SceneError::Io { path: dir.display().to_string(), source: e })?;
+/// let positions: [f32; 9] = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0];
+/// let bin: Vec<u8> = positions.iter().flat_map(|p| p.to_le_bytes()).collect();
+/// std::fs::write(dir.join("triangle.bin"), bin).map_err(|e| SceneError::Io { path: "triangle.bin".into(), source: e })?;
+/// let gltf = br#"{"asset": {"version": "2.0"},
+///   "buffers": [{"byteLength": 36, "uri": "triangle.bin"}],
+///   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+///   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+///                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+///   "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]}"#;
+/// let scene = load_slice_with_base(gltf, &dir, &LoadOptions::default());
+/// let missing = load_slice_with_base(gltf, &dir.join("elsewhere"), &LoadOptions::default());
+/// std::fs::remove_dir_all(&dir).ok();
+/// assert_eq!(scene?.triangle_count(), 1);
+/// assert!(matches!(missing, Err(SceneError::Io { .. })));
+/// # Ok::<(), SceneError>(())
+/// ```
 pub fn load_slice_with_base(
     bytes: &[u8],
     base_dir: &Path,
@@ -127,6 +181,31 @@ pub fn load_slice_with_base(
 ///
 /// # Errors
 /// As [`load_slice_with_base`].
+///
+/// ```
+/// use barytex_gltf::{LoadOptions, SceneError, SceneLimits, load_path};
+///
+/// let io = |e| SceneError::Io { path: "temporary file".into(), source: e };
+/// let path = std::env::temp_dir().join(format!("barytex-doc-path-{}.gltf", std::process::id()));
+/// let gltf = r#"{"asset": {"version": "2.0"},
+///   "buffers": [{"byteLength": 36, "uri":
+///     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+///   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+///   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+///                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+///   "nodes": [{"mesh": 0}, {"mesh": 0, "translation": [2, 0, 0]}], "scenes": [{"nodes": [0, 1]}]}"#;
+/// std::fs::write(&path, gltf).map_err(io)?;
+/// let scene = load_path(&path, &LoadOptions::default());
+/// // The file size is checked before the file is read.
+/// let tiny = LoadOptions { limits: SceneLimits { max_file_bytes: 100, ..SceneLimits::default() }, ..LoadOptions::default() };
+/// let refused = load_path(&path, &tiny);
+/// std::fs::remove_file(&path).ok();
+/// assert_eq!(scene?.instances.len(), 2);
+/// assert!(matches!(refused, Err(SceneError::TooLarge { what: "file bytes", limit: 100, .. })));
+/// assert!(matches!(load_path(&path, &LoadOptions::default()), Err(SceneError::Io { .. })));
+/// # Ok::<(), SceneError>(())
+/// ```
 pub fn load_path(path: impl AsRef<Path>, options: &LoadOptions) -> Result<Scene, SceneError> {
     let path = path.as_ref();
     guarded(|| {

@@ -103,6 +103,26 @@ impl PunctualLight {
 }
 
 /// A light placed in the flattened scene.
+///
+/// ```
+/// use barytex_gltf::{LightKind, LoadOptions, load_slice};
+/// use glam::Vec3;
+///
+/// // A spot light on a node turned a quarter turn about +X: it shines down −Y instead of −Z.
+/// let gltf = br#"{"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_lights_punctual"],
+///   "extensions": {"KHR_lights_punctual": {"lights": [
+///     {"type": "spot", "intensity": 20, "spot": {"outerConeAngle": 0.5}}]}},
+///   "nodes": [{"translation": [0, 3, 0], "rotation": [-0.70710677, 0, 0, 0.70710677],
+///              "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+///   "scenes": [{"nodes": [0]}]}"#;
+/// let scene = load_slice(gltf, &LoadOptions::default())?;
+/// let light = &scene.lights[0];
+/// assert!(matches!(light.light.kind, LightKind::Spot { inner_cone_angle: 0.0, outer_cone_angle: 0.5 }));
+/// assert_eq!((light.light.intensity, light.light.color, light.light.range), (20.0, Vec3::ONE, None));
+/// assert_eq!(light.position, Vec3::new(0.0, 3.0, 0.0));
+/// assert!((light.direction - Vec3::NEG_Y).length() < 1e-6);
+/// # Ok::<(), barytex_gltf::SceneError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct SceneLight {
     /// Index of the node carrying it.

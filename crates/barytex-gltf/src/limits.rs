@@ -3,6 +3,24 @@
 
 /// The largest scene this crate will load. Every count is checked against the JSON's claims
 /// before the matching allocation, so a hostile file fails fast instead of exhausting memory.
+///
+/// ```
+/// use barytex_gltf::{LoadOptions, SceneError, SceneLimits, load_slice};
+///
+/// // A small file that claims an accessor of a billion zeros (no bufferView backs it).
+/// let hostile = br#"{"asset": {"version": "2.0"},
+///   "accessors": [{"componentType": 5126, "count": 1000000000, "type": "VEC3"}],
+///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+///   "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]}"#;
+/// let err = load_slice(hostile, &LoadOptions::default()).unwrap_err();
+/// assert!(matches!(err, SceneError::TooLarge { .. }), "{err}");
+/// assert_eq!(err.pointer(), Some("/accessors/0/count"));
+/// // Limits can be tightened for a service that only expects small assets.
+/// let small = SceneLimits { max_nodes: 1, ..SceneLimits::default() };
+/// let two_nodes = br#"{"asset": {"version": "2.0"}, "nodes": [{}, {}]}"#;
+/// let options = LoadOptions { limits: small, ..LoadOptions::default() };
+/// assert!(matches!(load_slice(two_nodes, &options), Err(SceneError::TooLarge { .. })));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct SceneLimits {
     /// Largest glTF/GLB file, in bytes.

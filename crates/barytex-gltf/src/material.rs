@@ -42,6 +42,22 @@ pub struct TextureRef {
 }
 
 /// A material, with the specification's defaults filled in.
+///
+/// ```
+/// use barytex_gltf::{AlphaMode, LoadOptions, load_slice};
+/// use glam::Vec4;
+///
+/// let gltf = br#"{"asset": {"version": "2.0"}, "materials": [
+///   {"name": "leaf", "alphaMode": "MASK", "doubleSided": true,
+///    "pbrMetallicRoughness": {"baseColorFactor": [0.2, 0.6, 0.1, 1], "metallicFactor": 0}}]}"#;
+/// let scene = load_slice(gltf, &LoadOptions::default())?;
+/// let leaf = scene.material(Some(0));
+/// assert_eq!(leaf.alpha_mode, AlphaMode::Mask { cutoff: 0.5 }); // the default cutoff
+/// assert_eq!(leaf.base_color_factor, Vec4::new(0.2, 0.6, 0.1, 1.0));
+/// assert_eq!((leaf.metallic_factor, leaf.roughness_factor), (0.0, 1.0));
+/// assert!(leaf.double_sided && !leaf.unlit);
+/// # Ok::<(), barytex_gltf::SceneError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
     /// The material's name, if any.
@@ -101,6 +117,24 @@ impl Default for Material {
 
 impl Material {
     /// Every texture reference with the colour space its image must be decoded in.
+    ///
+    /// ```
+    /// use barytex_gltf::{Material, SamplerParams, TextureRef};
+    /// use barytex_texture::load::ColorSpace;
+    /// use barytex_uv::mappings::TexCoordMapping;
+    ///
+    /// let colour = TextureRef {
+    ///     texture: 0,
+    ///     image: Some(0),
+    ///     sampler: SamplerParams::default(),
+    ///     mapping: TexCoordMapping::new(0),
+    /// };
+    /// let normal = TextureRef { texture: 1, image: Some(1), ..colour };
+    /// let m = Material { base_color_texture: Some(colour), normal_texture: Some(normal), ..Material::default() };
+    /// // Colour is decoded as sRGB, a normal map as linear data.
+    /// assert_eq!(m.texture_refs(), [(colour, ColorSpace::Srgb), (normal, ColorSpace::Linear)]);
+    /// assert!(Material::default().texture_refs().is_empty());
+    /// ```
     #[must_use]
     pub fn texture_refs(&self) -> Vec<(TextureRef, barytex_texture::load::ColorSpace)> {
         use barytex_texture::load::ColorSpace::{Linear, Srgb};

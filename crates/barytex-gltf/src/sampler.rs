@@ -86,6 +86,21 @@ impl SamplerParams {
 
     /// The equivalent `barytex_texture` sampler. Minification without mipmaps
     /// (`NEAREST`/`LINEAR`) samples only level 0, expressed as a LOD clamp of 0.
+    ///
+    /// ```
+    /// use barytex_gltf::{MinFilter, SamplerParams, Wrap};
+    /// use barytex_texture::sampler::{AddressMode, FilterMode, MipmapFilterMode};
+    ///
+    /// // The glTF default (repeat, trilinear) is barytex's trilinear sampler with repeat.
+    /// let d = SamplerParams::default().to_descriptor();
+    /// assert_eq!(d.address_mode_u, AddressMode::Repeat);
+    /// assert_eq!((d.min_filter, d.mipmap_filter), (FilterMode::Linear, MipmapFilterMode::Linear));
+    /// // LINEAR minification without mipmaps pins the level of detail to 0.
+    /// let flat = SamplerParams { min_filter: MinFilter::Linear, wrap_t: Wrap::MirroredRepeat, ..SamplerParams::default() };
+    /// let d = flat.to_descriptor();
+    /// assert_eq!((d.lod_min_clamp, d.lod_max_clamp), (0.0, 0.0));
+    /// assert_eq!(d.address_mode_v, AddressMode::MirrorRepeat);
+    /// ```
     #[must_use]
     pub fn to_descriptor(&self) -> SamplerDescriptor {
         let mag_filter = match self.mag_filter {

@@ -30,6 +30,27 @@ pub struct MeshInstance {
 
 impl MeshInstance {
     /// Triangles in this instance.
+    ///
+    /// ```
+    /// use barytex_gltf::{LoadOptions, load_slice};
+    ///
+    /// // One triangle mesh placed by two nodes.
+    /// let gltf = r#"{"asset": {"version": "2.0"},
+    ///   "buffers": [{"byteLength": 36, "uri":
+    ///     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+    ///   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    ///   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+    ///                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+    ///   "materials": [{"pbrMetallicRoughness": {"roughnessFactor": 0.25}}],
+    ///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+    ///   "nodes": [{"mesh": 0}, {"mesh": 0, "scale": [-1, 1, 1]}], "scenes": [{"nodes": [0, 1]}]}"#;
+    /// let scene = load_slice(gltf.as_bytes(), &LoadOptions::default())?;
+    /// let counts: Vec<_> = scene.instances.iter().map(|i| i.triangle_count()).collect();
+    /// assert_eq!(counts, [1, 1]);
+    /// // The mirrored instance must swap its winding test.
+    /// assert_eq!(scene.instances.iter().map(|i| i.flips_winding).collect::<Vec<_>>(), [false, true]);
+    /// # Ok::<(), barytex_gltf::SceneError>(())
+    /// ```
     #[must_use]
     pub fn triangle_count(&self) -> usize {
         self.mesh.primitives.iter().map(|p| p.triangles.len()).sum()
@@ -113,13 +134,34 @@ pub struct Scene {
     pub decode_seconds: f64,
     /// An equirectangular environment panorama (linear light; `barytex_uv`'s equirect
     /// convention, −Z at the centre, +Y at the top) that lit materials reflect in proportion to
-    /// their smoothness — seed 000's environment mapping. glTF has no such slot: files load
-    /// with `None`; code (the demo) sets it.
+    /// their smoothness: environment mapping (J. F. Blinn, M. E. Newell, "Texture and reflection
+    /// in computer generated images", *Communications of the ACM* 19(10), 1976). glTF has no such
+    /// slot: files load with `None`; code (the demo) sets it.
     pub environment: Option<Arc<AnyTexture2d>>,
 }
 
 impl Scene {
     /// Triangles over all instances.
+    ///
+    /// ```
+    /// use barytex_gltf::{LoadOptions, load_slice};
+    ///
+    /// // One triangle mesh placed by two nodes.
+    /// let gltf = r#"{"asset": {"version": "2.0"},
+    ///   "buffers": [{"byteLength": 36, "uri":
+    ///     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+    ///   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    ///   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+    ///                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+    ///   "materials": [{"pbrMetallicRoughness": {"roughnessFactor": 0.25}}],
+    ///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+    ///   "nodes": [{"mesh": 0}, {"mesh": 0, "scale": [-1, 1, 1]}], "scenes": [{"nodes": [0, 1]}]}"#;
+    /// let scene = load_slice(gltf.as_bytes(), &LoadOptions::default())?;
+    /// assert_eq!(scene.triangle_count(), 2);
+    /// // The mesh itself is decoded once.
+    /// assert_eq!((scene.stats.triangles, scene.stats.instanced_triangles), (1, 2));
+    /// # Ok::<(), barytex_gltf::SceneError>(())
+    /// ```
     #[must_use]
     pub fn triangle_count(&self) -> usize {
         self.instances
@@ -129,6 +171,28 @@ impl Scene {
     }
 
     /// The material a primitive uses (the glTF default material for `None`).
+    ///
+    /// ```
+    /// use barytex_gltf::{LoadOptions, load_slice};
+    ///
+    /// // One triangle mesh placed by two nodes.
+    /// let gltf = r#"{"asset": {"version": "2.0"},
+    ///   "buffers": [{"byteLength": 36, "uri":
+    ///     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+    ///   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    ///   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+    ///                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+    ///   "materials": [{"pbrMetallicRoughness": {"roughnessFactor": 0.25}}],
+    ///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+    ///   "nodes": [{"mesh": 0}, {"mesh": 0, "scale": [-1, 1, 1]}], "scenes": [{"nodes": [0, 1]}]}"#;
+    /// let scene = load_slice(gltf.as_bytes(), &LoadOptions::default())?;
+    /// let primitive = &scene.instances[0].mesh.primitives[0];
+    /// assert_eq!(scene.material(primitive.material).roughness_factor, 0.25);
+    /// // No material (or a missing one): glTF's default material.
+    /// assert_eq!(scene.material(None), barytex_gltf::Material::default());
+    /// assert_eq!(scene.material(Some(9)).roughness_factor, 1.0);
+    /// # Ok::<(), barytex_gltf::SceneError>(())
+    /// ```
     #[must_use]
     pub fn material(&self, index: Option<usize>) -> Material {
         index

@@ -23,6 +23,14 @@ pub enum Topology {
 
 impl Topology {
     /// The topology for a glTF `mode` value.
+    ///
+    /// ```
+    /// use barytex_gltf::Topology;
+    ///
+    /// assert_eq!(Topology::from_gl(4), Some(Topology::Triangles));
+    /// assert_eq!(Topology::from_gl(6), Some(Topology::TriangleFan));
+    /// assert_eq!(Topology::from_gl(7), None); // not a glTF mode
+    /// ```
     #[must_use]
     pub fn from_gl(mode: u64) -> Option<Self> {
         Some(match mode {
@@ -38,6 +46,13 @@ impl Topology {
     }
 
     /// Whether the topology produces triangles.
+    ///
+    /// ```
+    /// use barytex_gltf::Topology;
+    ///
+    /// assert!(Topology::TriangleStrip.is_triangles());
+    /// assert!(!Topology::LineLoop.is_triangles());
+    /// ```
     #[must_use]
     pub fn is_triangles(self) -> bool {
         matches!(
@@ -47,6 +62,15 @@ impl Topology {
     }
 
     /// How many triangles `n` vertices (or indices) produce.
+    ///
+    /// ```
+    /// use barytex_gltf::Topology;
+    ///
+    /// assert_eq!(Topology::Triangles.triangle_count(7), 2); // the last vertex is left over
+    /// assert_eq!(Topology::TriangleStrip.triangle_count(7), 5);
+    /// assert_eq!(Topology::TriangleFan.triangle_count(2), 0);
+    /// assert_eq!(Topology::Lines.triangle_count(9), 0);
+    /// ```
     #[must_use]
     pub fn triangle_count(self, n: usize) -> usize {
         match self {
@@ -59,6 +83,17 @@ impl Topology {
 
 /// Triangulates `indices` (vertex indices in primitive order) for a triangle topology; returns
 /// an empty list for points and lines.
+///
+/// ```
+/// use barytex_gltf::topology::{Topology, triangulate};
+///
+/// // A strip alternates so every triangle keeps the first one's winding.
+/// assert_eq!(triangulate(Topology::TriangleStrip, &[0, 1, 2, 3]), [[0, 1, 2], [1, 3, 2]]);
+/// // A fan pivots on its first vertex (glTF lists it last: {v(i+1), v(i+2), v0}).
+/// assert_eq!(triangulate(Topology::TriangleFan, &[0, 1, 2, 3]), [[1, 2, 0], [2, 3, 0]]);
+/// assert_eq!(triangulate(Topology::Triangles, &[5, 6, 7, 8]), [[5, 6, 7]]);
+/// assert!(triangulate(Topology::Points, &[0, 1, 2]).is_empty());
+/// ```
 #[must_use]
 pub fn triangulate(topology: Topology, indices: &[u32]) -> Vec<[u32; 3]> {
     match topology {

@@ -1,6 +1,6 @@
 //! The built-in demo scene (what `barytex` renders with no arguments), built in code: no files.
 //!
-//! It shows the seeds at a glance: a checkerboard floor receding to the horizon (where aliasing,
+//! At a glance: a checkerboard floor receding to the horizon (where aliasing,
 //! mipmaps and anisotropic filtering differ most), a sphere with the equirectangular mapping, a
 //! capped cylinder with the cylindrical mapping, a torus with its (u, v) parametrisation, each
 //! with a texture that makes the mapping's distortion and seams visible, the torus also
@@ -76,7 +76,8 @@ fn stripes(side: u32) -> SceneImage {
 
 /// A tangent-space normal map (linear RGB, glTF's convention) of the bumps
 /// `h(u, v) = sin(2π·16u)·sin(2π·8v)`: the torus gets bumps its silhouette does not show
-/// (seed 002's bump mapping, through glTF's normal texture).
+/// (bump mapping, J. F. Blinn, "Simulation of wrinkled surfaces", *SIGGRAPH '78*, through glTF's
+/// normal texture).
 fn bumps(side: u32) -> SceneImage {
     let texture = Texture2d::from_fn(side, side, |x, y| {
         let (u, v) = (
@@ -231,6 +232,19 @@ pub const DEMO_FOG: f32 = 0.04;
 
 /// The options `barytex` renders the demo with: anisotropic filtering (8 probes), 4× MSAA,
 /// Blinn–Phong, fog in the background colour.
+///
+/// ```
+/// use barytex_render::demo::{DEMO_FOG, demo_options};
+/// use barytex_render::{AntiAliasing, Filter, RenderOptions};
+///
+/// let options = demo_options(320, 180);
+/// assert_eq!((options.width, options.height), (320, 180));
+/// assert_eq!((options.filter, options.anti_aliasing), (Filter::Anisotropic(8), AntiAliasing::Msaa(4)));
+/// // The fog fades into the background colour.
+/// let fog = options.fog.unwrap();
+/// assert_eq!(fog.density, DEMO_FOG);
+/// assert_eq!(fog.colour, RenderOptions::default().background.truncate());
+/// ```
 #[must_use]
 pub fn demo_options(width: u32, height: u32) -> RenderOptions {
     let defaults = RenderOptions::default();
@@ -250,6 +264,20 @@ pub fn demo_options(width: u32, height: u32) -> RenderOptions {
 
 /// The demo scene. (The generated meshes use fixed, valid resolutions; were one ever refused,
 /// it would be left empty rather than panic — the tests would catch it.)
+///
+/// ```
+/// use barytex_render::demo::{demo_options, demo_scene};
+/// use barytex_render::{CameraSource, render};
+///
+/// let scene = demo_scene();
+/// assert_eq!(scene.lights.len(), 3); // sun, point and spot
+/// assert!(scene.environment.is_some());
+/// // The demo brings its own camera; a tiny render looks through it.
+/// let out = render(&scene, &demo_options(24, 16))?;
+/// assert_eq!(out.camera.source, CameraSource::Scene(0));
+/// assert_eq!(out.stats.triangles, scene.triangle_count());
+/// # Ok::<(), barytex_render::RenderError>(())
+/// ```
 #[must_use]
 pub fn demo_scene() -> Scene {
     let images = vec![

@@ -7,6 +7,29 @@ use barytex_gltf::camera::Projection;
 use barytex_gltf::scene::Scene;
 
 /// View and projection of a render.
+///
+/// ```
+/// use barytex_render::{CameraSource, scene_camera};
+/// use glam::{Vec3, Vec4};
+///
+/// let gltf = r#"{"asset": {"version": "2.0"},
+///   "buffers": [{"byteLength": 36, "uri":
+///     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+///   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+///   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+///                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+///   "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+///   "nodes": [{"mesh": 0}, {"mesh": 0, "translation": [0, 0, -2]}, {"camera": 0, "translation": [0, 1, 5]}],
+///   "scenes": [{"nodes": [0, 1, 2]}]}"#;
+/// let scene = barytex_gltf::load_slice(gltf.as_bytes(), &barytex_gltf::LoadOptions::default())?;
+/// let camera = scene_camera(&scene, 0, 1.0).unwrap();
+/// // A point straight ahead at the near plane lands at the centre, rasterizer depth 0.
+/// let clip = camera.projection * camera.view * Vec4::new(0.0, 1.0, 4.9, 1.0);
+/// assert!((clip / clip.w - Vec4::new(0.0, 0.0, 0.0, 1.0)).abs().max_element() < 1e-5);
+/// assert_eq!(camera.source, CameraSource::Scene(0));
+/// # Ok::<(), barytex_gltf::SceneError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderCamera {
     /// World → view (the camera looks down its −Z, y up).
@@ -43,6 +66,27 @@ fn gl_to_vulkan() -> Mat4 {
 
 /// The world-space bounding box of every instance's vertices; `None` for a scene without
 /// finite vertices.
+///
+/// ```
+/// use barytex_render::scene_bounds;
+/// use glam::Vec3;
+///
+/// let gltf = r#"{"asset": {"version": "2.0"},
+///   "buffers": [{"byteLength": 36, "uri":
+///     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+///   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+///   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+///                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+///   "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+///   "nodes": [{"mesh": 0}, {"mesh": 0, "translation": [0, 0, -2]}, {"camera": 0, "translation": [0, 1, 5]}],
+///   "scenes": [{"nodes": [0, 1, 2]}]}"#;
+/// let scene = barytex_gltf::load_slice(gltf.as_bytes(), &barytex_gltf::LoadOptions::default())?;
+/// // The triangle at z = 0 and its copy at z = −2; the camera is not geometry.
+/// assert_eq!(scene_bounds(&scene), Some((Vec3::new(0.0, 0.0, -2.0), Vec3::new(1.0, 1.0, 0.0))));
+/// assert_eq!(scene_bounds(&barytex_gltf::Scene::default()), None);
+/// # Ok::<(), barytex_gltf::SceneError>(())
+/// ```
 #[must_use]
 pub fn scene_bounds(scene: &Scene) -> Option<(Vec3, Vec3)> {
     let mut lo = Vec3::splat(f32::INFINITY);
@@ -72,6 +116,38 @@ pub fn scene_bounds(scene: &Scene) -> Option<(Vec3, Vec3)> {
 /// - near = d/100, far = d·100.
 ///
 /// `None` when the scene has no finite vertex.
+///
+/// ```
+/// use barytex_render::{CameraSource, auto_camera, scene_bounds};
+/// use glam::Vec3;
+///
+/// let gltf = r#"{"asset": {"version": "2.0"},
+///   "buffers": [{"byteLength": 36, "uri":
+///     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+///   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+///   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+///                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+///   "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+///   "nodes": [{"mesh": 0}, {"mesh": 0, "translation": [0, 0, -2]}, {"camera": 0, "translation": [0, 1, 5]}],
+///   "scenes": [{"nodes": [0, 1, 2]}]}"#;
+/// let scene = barytex_gltf::load_slice(gltf.as_bytes(), &barytex_gltf::LoadOptions::default())?;
+/// let camera = auto_camera(&scene, 2.0).unwrap();
+/// assert_eq!(camera.source, CameraSource::Auto);
+/// // On the +Z side of the bounds' centre, looking down −Z …
+/// let (lo, hi) = scene_bounds(&scene).unwrap();
+/// let centre = (lo + hi) / 2.0;
+/// assert_eq!((camera.eye.x, camera.eye.y), (centre.x, centre.y));
+/// assert!(camera.eye.z > hi.z && camera.forward() == Vec3::NEG_Z);
+/// // … far enough that every corner of the bounds is in view.
+/// for corner in 0..8 {
+///     let p = Vec3::select(glam::BVec3::new(corner & 1 != 0, corner & 2 != 0, corner & 4 != 0), hi, lo);
+///     let ndc = camera.projection.project_point3(camera.view.transform_point3(p));
+///     assert!(ndc.x.abs() <= 1.0 && ndc.y.abs() <= 1.0 && (0.0..=1.0).contains(&ndc.z));
+/// }
+/// assert!(auto_camera(&barytex_gltf::Scene::default(), 1.0).is_none());
+/// # Ok::<(), barytex_gltf::SceneError>(())
+/// ```
 #[must_use]
 pub fn auto_camera(scene: &Scene, aspect: f32) -> Option<RenderCamera> {
     let (lo, hi) = scene_bounds(scene)?;
@@ -103,6 +179,29 @@ pub fn auto_camera(scene: &Scene, aspect: f32) -> Option<RenderCamera> {
 
 /// The scene's camera `index` for an image of aspect `aspect`; `None` when there is no such
 /// camera or its placement is singular.
+///
+/// ```
+/// use barytex_render::scene_camera;
+/// use glam::Vec3;
+///
+/// let gltf = r#"{"asset": {"version": "2.0"},
+///   "buffers": [{"byteLength": 36, "uri":
+///     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+///   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+///   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+///                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+///   "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+///   "nodes": [{"mesh": 0}, {"mesh": 0, "translation": [0, 0, -2]}, {"camera": 0, "translation": [0, 1, 5]}],
+///   "scenes": [{"nodes": [0, 1, 2]}]}"#;
+/// let scene = barytex_gltf::load_slice(gltf.as_bytes(), &barytex_gltf::LoadOptions::default())?;
+/// let camera = scene_camera(&scene, 0, 16.0 / 9.0).unwrap();
+/// assert_eq!(camera.eye, Vec3::new(0.0, 1.0, 5.0));
+/// // The camera fixes no aspect ratio, so the image's is used: x is scaled by 9/16 of y.
+/// assert!((camera.projection_gl.x_axis.x / camera.projection_gl.y_axis.y - 9.0 / 16.0).abs() < 1e-6);
+/// assert!(scene_camera(&scene, 1, 1.0).is_none());
+/// # Ok::<(), barytex_gltf::SceneError>(())
+/// ```
 #[must_use]
 pub fn scene_camera(scene: &Scene, index: usize, aspect: f32) -> Option<RenderCamera> {
     let camera = scene.cameras.get(index)?;
@@ -122,6 +221,20 @@ pub fn scene_camera(scene: &Scene, index: usize, aspect: f32) -> Option<RenderCa
 
 impl RenderCamera {
     /// The unit direction the camera looks along (its −Z in world space).
+    ///
+    /// ```
+    /// use barytex_render::scene_camera;
+    /// use glam::Vec3;
+    ///
+    /// // A camera turned a quarter turn about +Y looks down −X.
+    /// let gltf = br#"{"asset": {"version": "2.0"},
+    ///   "cameras": [{"type": "orthographic", "orthographic": {"xmag": 1, "ymag": 1, "znear": 0, "zfar": 10}}],
+    ///   "nodes": [{"camera": 0, "rotation": [0, 0.70710677, 0, 0.70710677]}], "scenes": [{"nodes": [0]}]}"#;
+    /// let scene = barytex_gltf::load_slice(gltf, &barytex_gltf::LoadOptions::default())?;
+    /// let forward = scene_camera(&scene, 0, 1.0).unwrap().forward();
+    /// assert!((forward - Vec3::NEG_X).length() < 1e-6);
+    /// # Ok::<(), barytex_gltf::SceneError>(())
+    /// ```
     #[must_use]
     pub fn forward(&self) -> Vec3 {
         self.view
@@ -131,6 +244,26 @@ impl RenderCamera {
     }
 
     /// The matrices as text (column vectors written as rows of the printed matrix).
+    ///
+    /// ```
+    /// use barytex_render::auto_camera;
+    ///
+    /// let gltf = r#"{"asset": {"version": "2.0"},
+    ///   "buffers": [{"byteLength": 36, "uri":
+    ///     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+    ///   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    ///   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+    ///                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+    ///   "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+    ///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+    ///   "nodes": [{"mesh": 0}, {"mesh": 0, "translation": [0, 0, -2]}, {"camera": 0, "translation": [0, 1, 5]}],
+    ///   "scenes": [{"nodes": [0, 1, 2]}]}"#;
+    /// let scene = barytex_gltf::load_slice(gltf.as_bytes(), &barytex_gltf::LoadOptions::default())?;
+    /// let text = auto_camera(&scene, 1.0).unwrap().describe();
+    /// assert!(text.starts_with("automatic camera, eye at (0.500000, 0.500000, "));
+    /// assert_eq!(text.lines().count(), 1 + 3 * 5); // a heading, then three titled 4×4 matrices
+    /// # Ok::<(), barytex_gltf::SceneError>(())
+    /// ```
     #[must_use]
     pub fn describe(&self) -> String {
         let rows = |m: &Mat4| {

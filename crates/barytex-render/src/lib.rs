@@ -63,6 +63,18 @@ pub use stats::RenderStats;
 use passes::Varyings;
 
 /// Why a scene could not be rendered.
+///
+/// ```
+/// use barytex_render::{CameraChoice, RenderError, RenderOptions, render};
+///
+/// let empty = barytex_gltf::Scene::default();
+/// let small = RenderOptions { width: 8, height: 8, ..RenderOptions::default() };
+/// assert_eq!(render(&empty, &small).unwrap_err(), RenderError::NothingToFrame);
+/// let second = RenderOptions { camera: CameraChoice::Index(1), ..small };
+/// assert_eq!(render(&empty, &second).unwrap_err(), RenderError::NoSuchCamera { index: 1, count: 0 });
+/// let no_pixels = RenderOptions { width: 0, ..small };
+/// assert!(matches!(render(&empty, &no_pixels), Err(RenderError::InvalidOption(_))));
+/// ```
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum RenderError {
@@ -128,12 +140,51 @@ pub struct Rendered {
 /// # Errors
 /// A zero or oversized image, an invalid sample count, a camera index beyond the scene's, a
 /// scene with nothing to frame, or a texture that cannot be prepared.
+///
+/// ```
+/// use barytex_render::{RenderOptions, Shading, auto_camera, render};
+/// use glam::{Vec3, Vec4};
+///
+/// // An orange triangle, unlit, through the automatic camera.
+/// let gltf = r#"{"asset": {"version": "2.0"},
+///   "buffers": [{"byteLength": 36, "uri":
+///     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+///   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+///   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+///                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+///   "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 0.5, 0, 1]}}],
+///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+///   "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]}"#;
+/// let scene = barytex_gltf::load_slice(gltf.as_bytes(), &barytex_gltf::LoadOptions::default())?;
+/// let options = RenderOptions { width: 32, height: 32, shading: Shading::Unlit, ..RenderOptions::default() };
+/// let out = render(&scene, &options)?;
+/// assert_eq!(out.camera, auto_camera(&scene, 1.0).unwrap());
+/// // Where the camera sees the triangle's centroid, the pixel is the base colour exactly.
+/// let clip = out.camera.projection * out.camera.view * Vec3::splat(1.0 / 3.0).with_z(0.0).extend(1.0);
+/// let (x, y) = ((clip.x / clip.w + 1.0) * 16.0, (1.0 - clip.y / clip.w) * 16.0);
+/// assert_eq!(out.image.pixel(x as u32, y as u32), Some(Vec4::new(1.0, 0.5, 0.0, 1.0)));
+/// // A corner shows the background.
+/// assert_eq!(out.image.pixel(31, 0), Some(options.background));
+/// assert_eq!(out.stats.triangles, 1);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn render(scene: &Scene, options: &RenderOptions) -> Result<Rendered, RenderError> {
     render_with_progress(scene, options, &mut |_, _| {})
 }
 
 /// The passes over the scene `anti_aliasing` plans: `n²` for accumulated supersampling (`n > 5`),
 /// at most `max(n, 4)` for adaptive sampling (it stops when every pixel has converged), else 1.
+///
+/// ```
+/// use barytex_render::{AntiAliasing, planned_passes};
+///
+/// assert_eq!(planned_passes(AntiAliasing::None), 1);
+/// assert_eq!(planned_passes(AntiAliasing::Msaa(8)), 1);
+/// assert_eq!(planned_passes(AntiAliasing::Supersample(4)), 1); // up to 5×5 in one pass
+/// assert_eq!(planned_passes(AntiAliasing::Supersample(6)), 36); // accumulated, one pass each
+/// assert_eq!(planned_passes(AntiAliasing::Adaptive(2)), 4);
+/// assert_eq!(planned_passes(AntiAliasing::Adaptive(16)), 16);
+/// ```
 #[must_use]
 pub fn planned_passes(anti_aliasing: AntiAliasing) -> u32 {
     match anti_aliasing {
@@ -148,6 +199,29 @@ pub fn planned_passes(anti_aliasing: AntiAliasing) -> u32 {
 ///
 /// # Errors
 /// As [`render`].
+///
+/// ```
+/// use barytex_render::{AntiAliasing, RenderOptions, planned_passes, render_with_progress};
+///
+/// let gltf = r#"{"asset": {"version": "2.0"},
+///   "buffers": [{"byteLength": 36, "uri":
+///     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+///   "bufferViews": [{"buffer": 0, "byteLength": 36}],
+///   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+///                  "min": [0, 0, 0], "max": [1, 1, 0]}],
+///   "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [1, 0.5, 0, 1]}}],
+///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
+///   "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]}"#;
+/// let scene = barytex_gltf::load_slice(gltf.as_bytes(), &barytex_gltf::LoadOptions::default())?;
+/// let aa = AntiAliasing::Jitter(6);
+/// let options = RenderOptions { width: 8, height: 8, anti_aliasing: aa, ..RenderOptions::default() };
+/// let mut calls = Vec::new();
+/// let out = render_with_progress(&scene, &options, &mut |done, planned| calls.push((done, planned)))?;
+/// assert_eq!(calls.len(), 36);
+/// assert_eq!(calls.last(), Some(&(36, planned_passes(aa))));
+/// assert_eq!(out.stats.passes, 36);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn render_with_progress(
     scene: &Scene,
     options: &RenderOptions,

@@ -35,8 +35,9 @@ pub enum Shading {
     /// unlit under every lit mode.
     #[default]
     Phong,
-    /// Gouraud, except on triangles where the seed's highlight test (H-test,
-    /// `barytex_shade::HighlightTest`) finds a visible specular highlight: those get Phong.
+    /// Gouraud, except on triangles where the five-stage highlight test (H-test,
+    /// `barytex_shade::HighlightTest`, whose crate documentation cites its source) finds a visible
+    /// specular highlight: those get Phong.
     Hybrid,
 }
 

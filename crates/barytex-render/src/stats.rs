@@ -46,9 +46,10 @@ pub struct RenderStats {
     pub mip_seconds: f64,
     /// Seconds rasterizing and shading (the two are interleaved per pixel).
     pub draw_seconds: f64,
-    /// With [`RenderOptions::measure_stages`](crate::RenderOptions::measure_stages): seconds the same passes took with a fragment
-    /// shader that returns a constant (vertex stage, clipping, coverage, depth test,
-    /// interpolation of the varyings, writes). `draw_seconds` minus this is the shading's cost.
+    /// With [`RenderOptions::measure_stages`](crate::RenderOptions::measure_stages): seconds the
+    /// same passes took with a fragment shader that returns a constant (vertex stage, clipping,
+    /// coverage, depth test, interpolation of the varyings, writes). `draw_seconds` minus this is
+    /// the shading's cost.
     /// Alpha-masked fragments are not discarded in that pass, so it may do slightly more work.
     pub raster_seconds: Option<f64>,
 }

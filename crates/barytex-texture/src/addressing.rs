@@ -18,6 +18,15 @@
 use crate::sampler::AddressMode;
 
 /// The texel index `⌊u·size⌋` of nearest filtering, before wrapping.
+///
+/// ```
+/// use barytex_texture::addressing::nearest_index;
+///
+/// assert_eq!(nearest_index(0.0, 4), 0);
+/// assert_eq!(nearest_index(0.999_999, 4), 3);
+/// assert_eq!(nearest_index(-0.01, 4), -1); // wrapping comes later
+/// assert_eq!(nearest_index(f32::NAN, 4), 0);
+/// ```
 #[must_use]
 #[inline]
 pub fn nearest_index(u: f32, size: u32) -> i64 {
@@ -55,6 +64,17 @@ pub struct LinearTaps {
 ///
 /// `u·size − ½` and its fraction are computed exactly in f64 (sides up to 2²⁹), then the weight
 /// is rounded once to f32. A non-finite `u` gives index 0 and weight 0.
+///
+/// ```
+/// use barytex_texture::addressing::{LinearTaps, linear_taps};
+///
+/// // At texel 1's centre all the weight is on texel 1.
+/// assert_eq!(linear_taps(0.375, 4), LinearTaps { i0: 1, frac: 0.0 });
+/// // Halfway between the centres of texels 1 and 2.
+/// assert_eq!(linear_taps(0.5, 4), LinearTaps { i0: 1, frac: 0.5 });
+/// // Left of texel 0's centre the lower tap is index −1.
+/// assert_eq!(linear_taps(0.0, 4), LinearTaps { i0: -1, frac: 0.5 });
+/// ```
 #[must_use]
 #[inline]
 pub fn linear_taps(u: f32, size: u32) -> LinearTaps {
@@ -72,6 +92,18 @@ pub fn linear_taps(u: f32, size: u32) -> LinearTaps {
 /// Applies an address mode to an integer texel index; `None` means "read the border colour"
 /// ([`AddressMode::ClampToBorder`] outside `[0, size)`). Every texture side is at least 1; a
 /// `size` of 0 is treated as 1.
+///
+/// ```
+/// use barytex_texture::addressing::wrap;
+/// use barytex_texture::sampler::AddressMode;
+///
+/// assert_eq!(wrap(5, 4, AddressMode::Repeat), Some(1));
+/// assert_eq!(wrap(-1, 4, AddressMode::Repeat), Some(3));
+/// assert_eq!(wrap(4, 4, AddressMode::MirrorRepeat), Some(3)); // 0 1 2 3 | 3 2 1 0
+/// assert_eq!(wrap(-1, 4, AddressMode::MirrorRepeat), Some(0));
+/// assert_eq!(wrap(9, 4, AddressMode::ClampToEdge), Some(3));
+/// assert_eq!(wrap(4, 4, AddressMode::ClampToBorder), None);
+/// ```
 #[must_use]
 #[inline]
 pub fn wrap(i: i64, size: u32, mode: AddressMode) -> Option<u32> {

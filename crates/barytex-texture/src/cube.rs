@@ -32,6 +32,22 @@ impl<T: Texel> CubeTexture<T> {
     /// # Errors
     /// [`TextureError::InvalidParameter`] when a face is not square or the faces differ in size or
     /// chain length.
+    ///
+    /// ```
+    /// use barytex_texture::{CubeTexture, MipChain, R8, SamplerDescriptor, Texture2d};
+    /// use glam::Vec3;
+    ///
+    /// // Face k (+X, −X, +Y, −Y, +Z, −Z) is a 2×2 face filled with 40·k.
+    /// let face = |k: u8| Texture2d::new(2, 2, R8(40 * k)).map(MipChain::single);
+    /// let faces = [face(0)?, face(1)?, face(2)?, face(3)?, face(4)?, face(5)?];
+    /// let cube = CubeTexture::new(faces, SamplerDescriptor::bilinear())?;
+    /// assert_eq!(cube.faces()[5].base().texel(0, 0), Some(R8(200)));
+    /// // A non-square face is refused.
+    /// let wide = || Texture2d::new(2, 1, R8(0)).map(MipChain::single);
+    /// let bad = [wide()?, wide()?, wide()?, wide()?, wide()?, wide()?];
+    /// assert!(CubeTexture::new(bad, SamplerDescriptor::bilinear()).is_err());
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     pub fn new(
         faces: [MipChain<T>; 6],
         descriptor: SamplerDescriptor,
@@ -57,12 +73,43 @@ impl<T: Texel> CubeTexture<T> {
     }
 
     /// The face chains.
+    ///
+    /// ```
+    /// use barytex_texture::{CubeTexture, MipChain, R8, SamplerDescriptor, Texture2d};
+    /// use glam::Vec3;
+    ///
+    /// // Face k (+X, −X, +Y, −Y, +Z, −Z) is a 2×2 face filled with 40·k.
+    /// let face = |k: u8| Texture2d::new(2, 2, R8(40 * k)).map(MipChain::single);
+    /// let faces = [face(0)?, face(1)?, face(2)?, face(3)?, face(4)?, face(5)?];
+    /// let cube = CubeTexture::new(faces, SamplerDescriptor::bilinear())?;
+    /// let sizes: Vec<_> = cube.faces().iter().map(|f| f.base().size()).collect();
+    /// assert_eq!(sizes, [(2, 2); 6]);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn faces(&self) -> &[MipChain<T>; 6] {
         &self.faces
     }
 
     /// The colour seen along `dir` at an explicit level of detail.
+    ///
+    /// ```
+    /// use barytex_texture::{CubeTexture, MipChain, R8, SamplerDescriptor, Texture2d};
+    /// use glam::Vec3;
+    ///
+    /// // Face k (+X, −X, +Y, −Y, +Z, −Z) is a 2×2 face filled with 40·k.
+    /// let face = |k: u8| Texture2d::new(2, 2, R8(40 * k)).map(MipChain::single);
+    /// let faces = [face(0)?, face(1)?, face(2)?, face(3)?, face(4)?, face(5)?];
+    /// let cube = CubeTexture::new(faces, SamplerDescriptor::bilinear())?;
+    /// // The direction picks the face by its largest component; the length does not matter.
+    /// assert_eq!(cube.sample_level(Vec3::new(0.0, 0.0, -3.0), 0.0).x, R8(200).0 as f32 / 255.0);
+    /// assert_eq!(cube.sample_level(Vec3::new(0.1, 1.0, 0.2), 0.0).x, R8(80).0 as f32 / 255.0);
+    /// // The edge between +X and +Z blends the two faces equally, with no seam.
+    /// let edge = cube.sample_level(Vec3::new(1.0, 0.0, 1.0), 0.0).x;
+    /// assert!((edge - 80.0 / 255.0).abs() < 1e-6);
+    /// assert_eq!(cube.sample_level(Vec3::ZERO, 0.0), glam::Vec4::ZERO);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn sample_level(&self, dir: Vec3, lod: f32) -> Vec4 {
         let Some((face, uv)) = cube_face_uv(dir) else {
@@ -73,6 +120,21 @@ impl<T: Texel> CubeTexture<T> {
 
     /// The colour seen along `dir`, filtered over the footprint given by the direction's screen
     /// derivatives `ddx`, `ddy` (projected onto the face through the face map's Jacobian).
+    ///
+    /// ```
+    /// use barytex_texture::{CubeTexture, MipChain, R8, SamplerDescriptor, Texture2d};
+    /// use glam::Vec3;
+    ///
+    /// // Face k (+X, −X, +Y, −Y, +Z, −Z) is a 2×2 face filled with 40·k.
+    /// let face = |k: u8| Texture2d::new(2, 2, R8(40 * k)).map(MipChain::single);
+    /// let faces = [face(0)?, face(1)?, face(2)?, face(3)?, face(4)?, face(5)?];
+    /// let cube = CubeTexture::new(faces, SamplerDescriptor::bilinear())?;
+    /// let c = cube.sample(Vec3::X, Vec3::ZERO, Vec3::ZERO);
+    /// assert_eq!(c, cube.sample_level(Vec3::X, 0.0));
+    /// assert_eq!(c.x, 0.0);
+    /// assert_eq!(cube.sample(Vec3::NAN, Vec3::ZERO, Vec3::ZERO), glam::Vec4::ZERO);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn sample(&self, dir: Vec3, ddx: Vec3, ddy: Vec3) -> Vec4 {
         let Some((face, j)) = cube_face_uv_and_jacobian(dir) else {

@@ -39,6 +39,23 @@ impl Limits {
     ///
     /// # Errors
     /// [`TextureError::Empty`] for a zero side, [`TextureError::TooLarge`] beyond a limit.
+    ///
+    /// ```
+    /// use barytex_texture::{Limits, TextureError};
+    ///
+    /// let limits = Limits::default();
+    /// // 256×128 texels of 4 bytes.
+    /// assert_eq!(limits.check(256, 128, 4), Ok(131_072));
+    /// assert_eq!(limits.check(0, 1, 4), Err(TextureError::Empty { width: 0, height: 1 }));
+    /// assert!(matches!(
+    ///     limits.check(100_000, 1, 4),
+    ///     Err(TextureError::TooLarge { what: "width", requested: 100_000, limit: 16_384 })
+    /// ));
+    /// // A byte budget decides for large texels: 1024² RGBA32F is 16 MiB.
+    /// let small = Limits { max_bytes: 1 << 20, ..Limits::default() };
+    /// assert!(matches!(small.check(1024, 1024, 16), Err(TextureError::TooLarge { what: "bytes", .. })));
+    /// assert_eq!(Limits::UNLIMITED.check(1024, 1024, 16), Ok(16 << 20));
+    /// ```
     pub fn check(
         &self,
         width: u32,

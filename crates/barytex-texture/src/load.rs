@@ -39,6 +39,17 @@ pub enum AnyTexture2d {
 
 impl AnyTexture2d {
     /// `(width, height)`.
+    ///
+    /// ```
+    /// use barytex_texture::load::{AnyTexture2d, ColorSpace, encode_png, load_from_memory};
+    /// use barytex_texture::{Limits, Srgba8, Texture2d};
+    ///
+    /// let png = encode_png(&Texture2d::new(3, 2, Srgba8([1, 2, 3, 255]))?)?;
+    /// let loaded = load_from_memory(&png, ColorSpace::Srgb, &Limits::default())?;
+    /// assert_eq!(loaded.size(), (3, 2));
+    /// assert!(matches!(loaded, AnyTexture2d::Srgba8(_)));
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn size(&self) -> (u32, u32) {
         match self {
@@ -54,6 +65,21 @@ impl AnyTexture2d {
     ///
     /// # Errors
     /// A failed allocation.
+    ///
+    /// ```
+    /// use barytex_texture::load::{ColorSpace, encode_png, load_from_memory};
+    /// use barytex_texture::{Limits, Rgba8, Texture2d};
+    ///
+    /// let png = encode_png(&Texture2d::new(1, 1, Rgba8([188, 0, 255, 255]))?)?;
+    /// // The same bytes read as sRGB colour or as linear data.
+    /// let srgb = load_from_memory(&png, ColorSpace::Srgb, &Limits::default())?.to_rgba32f()?;
+    /// let data = load_from_memory(&png, ColorSpace::Linear, &Limits::default())?.to_rgba32f()?;
+    /// let (s, d) = (srgb.texel(0, 0).unwrap().0, data.texel(0, 0).unwrap().0);
+    /// assert!((s[0] - 0.5).abs() < 0.003); // sRGB 188 is half the light
+    /// assert_eq!(d[0], 188.0 / 255.0);
+    /// assert_eq!((s[2], s[3], d[2]), (1.0, 1.0, 1.0));
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     pub fn to_rgba32f(&self) -> Result<Texture2d<Rgba32f>, TextureError> {
         match self {
             Self::Srgba8(t) => t.to_linear(),
@@ -74,6 +100,30 @@ impl AnyTexture2d {
 /// # Errors
 /// [`TextureError::TooLarge`] or [`TextureError::Empty`] for refused dimensions,
 /// [`TextureError::Decode`] for an unknown format or a corrupt file.
+///
+/// ```
+/// use barytex_texture::load::{AnyTexture2d, ColorSpace, encode_png, load_from_memory};
+/// use barytex_texture::{Limits, Rgba8, Texture2d, TextureError};
+///
+/// let texture = Texture2d::from_fn(8, 4, |x, y| Rgba8([x as u8, y as u8, 0, 255]))?;
+/// let png = encode_png(&texture)?;
+/// // Linear 8-bit colour comes back texel for texel.
+/// let AnyTexture2d::Rgba8(back) = load_from_memory(&png, ColorSpace::Linear, &Limits::default())? else {
+///     panic!("an RGBA8 PNG loads as Rgba8 under ColorSpace::Linear");
+/// };
+/// assert_eq!(back, texture);
+/// // The header's width is checked before decoding.
+/// let narrow = Limits { max_width: 4, ..Limits::default() };
+/// assert!(matches!(
+///     load_from_memory(&png, ColorSpace::Linear, &narrow),
+///     Err(TextureError::TooLarge { what: "width", requested: 8, limit: 4 })
+/// ));
+/// assert!(matches!(
+///     load_from_memory(b"not an image", ColorSpace::Srgb, &Limits::default()),
+///     Err(TextureError::Decode(_))
+/// ));
+/// # Ok::<(), TextureError>(())
+/// ```
 pub fn load_from_memory(
     bytes: &[u8],
     color_space: ColorSpace,
@@ -105,6 +155,21 @@ pub fn load_from_memory(
 ///
 /// # Errors
 /// As [`load_from_memory`], plus [`TextureError::Decode`] when the file cannot be read.
+///
+/// ```
+/// use barytex_texture::load::{ColorSpace, load_from_path, save_png};
+/// use barytex_texture::{Limits, Srgba8, Texture2d, TextureError};
+///
+/// let path = std::env::temp_dir().join(format!("barytex-doc-load-{}.png", std::process::id()));
+/// save_png(&Texture2d::new(2, 2, Srgba8([9, 8, 7, 255]))?, &path)?;
+/// let loaded = load_from_path(&path, ColorSpace::Srgb, &Limits::default());
+/// std::fs::remove_file(&path).ok();
+/// assert_eq!(loaded?.size(), (2, 2));
+/// // A missing file is a Decode error naming the path.
+/// let missing = load_from_path(&path, ColorSpace::Srgb, &Limits::default());
+/// assert!(matches!(missing, Err(TextureError::Decode(m)) if m.contains("barytex-doc-load")));
+/// # Ok::<(), TextureError>(())
+/// ```
 pub fn load_from_path(
     path: impl AsRef<Path>,
     color_space: ColorSpace,
@@ -190,6 +255,15 @@ fn convert(image: DynamicImage, color_space: ColorSpace) -> Result<AnyTexture2d,
 ///
 /// # Errors
 /// [`TextureError::Decode`] if the encoder fails.
+///
+/// ```
+/// use barytex_texture::load::encode_png;
+/// use barytex_texture::{Srgba8, Texture2d};
+///
+/// let png = encode_png(&Texture2d::new(4, 4, Srgba8([255, 0, 0, 255]))?)?;
+/// assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n"); // the PNG signature
+/// # Ok::<(), barytex_texture::TextureError>(())
+/// ```
 pub fn encode_png<T: Texel + Into<[u8; 4]>>(
     texture: &Texture2d<T>,
 ) -> Result<Vec<u8>, TextureError> {
@@ -208,6 +282,20 @@ pub fn encode_png<T: Texel + Into<[u8; 4]>>(
 ///
 /// # Errors
 /// [`TextureError::Decode`] if encoding or writing fails.
+///
+/// ```
+/// use barytex_texture::load::{AnyTexture2d, ColorSpace, load_from_path, save_png};
+/// use barytex_texture::{Limits, Srgba8, Texture2d};
+///
+/// let texture = Texture2d::from_fn(3, 1, |x, _| Srgba8([40 * x as u8, 0, 0, 255]))?;
+/// let path = std::env::temp_dir().join(format!("barytex-doc-save-{}.png", std::process::id()));
+/// save_png(&texture, &path)?;
+/// let back = load_from_path(&path, ColorSpace::Srgb, &Limits::default());
+/// std::fs::remove_file(&path).ok();
+/// // sRGB bytes are written as stored, so they come back unchanged.
+/// assert!(matches!(back?, AnyTexture2d::Srgba8(t) if t == texture));
+/// # Ok::<(), barytex_texture::TextureError>(())
+/// ```
 pub fn save_png<T: Texel + Into<[u8; 4]>>(
     texture: &Texture2d<T>,
     path: impl AsRef<Path>,

@@ -12,6 +12,15 @@ pub struct MipChain<T> {
 
 /// The number of levels of a complete chain for a `width × height` base:
 /// `⌊log₂ max(width, height)⌋ + 1` (0 for an empty size).
+///
+/// ```
+/// use barytex_texture::mip_chain::full_length;
+///
+/// assert_eq!(full_length(256, 256), 9); // 256, 128, …, 1
+/// assert_eq!(full_length(5, 3), 3); // 5×3, 2×1, 1×1
+/// assert_eq!(full_length(1, 1), 1);
+/// assert_eq!(full_length(0, 0), 0);
+/// ```
 #[must_use]
 pub fn full_length(width: u32, height: u32) -> usize {
     let side = width.max(height);
@@ -23,6 +32,15 @@ pub fn full_length(width: u32, height: u32) -> usize {
 }
 
 /// The size of level `level` of a chain whose base is `width × height`.
+///
+/// ```
+/// use barytex_texture::mip_chain::level_size;
+///
+/// assert_eq!(level_size(5, 3, 0), (5, 3));
+/// assert_eq!(level_size(5, 3, 1), (2, 1)); // rounded down
+/// assert_eq!(level_size(5, 3, 2), (1, 1)); // never below 1
+/// assert_eq!(level_size(5, 3, 99), (1, 1));
+/// ```
 #[must_use]
 pub fn level_size(width: u32, height: u32, level: usize) -> (u32, u32) {
     let shift = u32::try_from(level).unwrap_or(u32::MAX).min(31);
@@ -31,6 +49,15 @@ pub fn level_size(width: u32, height: u32, level: usize) -> (u32, u32) {
 
 impl<T: Texel> MipChain<T> {
     /// A chain of the base level alone (magnification-only textures need no more).
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, R8, Texture2d};
+    ///
+    /// let chain = MipChain::single(Texture2d::new(4, 4, R8(1))?);
+    /// assert_eq!(chain.len(), 1);
+    /// assert!(!chain.is_complete()); // a 4×4 base has a 3-level chain
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn single(base: Texture2d<T>) -> Self {
         Self { levels: vec![base] }
@@ -42,6 +69,21 @@ impl<T: Texel> MipChain<T> {
     /// # Errors
     /// [`TextureError::InvalidParameter`] for no levels, a wrong level size, or more levels than a
     /// complete chain has.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, R8, Texture2d, TextureError};
+    ///
+    /// let level = |w, h| Texture2d::new(w, h, R8(0));
+    /// let chain = MipChain::from_levels(vec![level(4, 2)?, level(2, 1)?, level(1, 1)?])?;
+    /// assert!(chain.is_complete());
+    /// // 4×2 halves to 2×1, not 2×2.
+    /// assert!(matches!(
+    ///     MipChain::from_levels(vec![level(4, 2)?, level(2, 2)?]),
+    ///     Err(TextureError::InvalidParameter { what: "levels", .. })
+    /// ));
+    /// assert!(MipChain::<R8>::from_levels(Vec::new()).is_err());
+    /// # Ok::<(), TextureError>(())
+    /// ```
     pub fn from_levels(levels: Vec<Texture2d<T>>) -> Result<Self, TextureError> {
         let Some(base) = levels.first() else {
             return Err(TextureError::InvalidParameter {
@@ -68,6 +110,15 @@ impl<T: Texel> MipChain<T> {
     }
 
     /// All levels, base first (never empty).
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, MipOptions, R8, Texture2d};
+    ///
+    /// let chain = MipChain::generate(Texture2d::new(8, 2, R8(3))?, &MipOptions::default())?;
+    /// let sizes: Vec<_> = chain.levels().iter().map(|l| l.size()).collect();
+    /// assert_eq!(sizes, [(8, 2), (4, 1), (2, 1), (1, 1)]);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     #[inline]
     pub fn levels(&self) -> &[Texture2d<T>] {
@@ -75,6 +126,15 @@ impl<T: Texel> MipChain<T> {
     }
 
     /// Level `i`, or `None` past the last.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, MipOptions, R8, Texture2d};
+    ///
+    /// let chain = MipChain::generate(Texture2d::new(2, 2, R8(3))?, &MipOptions::default())?;
+    /// assert_eq!(chain.level(1).map(|l| l.texels().to_vec()), Some(vec![R8(3)]));
+    /// assert!(chain.level(2).is_none());
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     #[inline]
     pub fn level(&self, i: usize) -> Option<&Texture2d<T>> {
@@ -82,6 +142,15 @@ impl<T: Texel> MipChain<T> {
     }
 
     /// The base level.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, MipOptions, R8, Texture2d};
+    ///
+    /// let base = Texture2d::from_fn(2, 2, |x, _| R8(x as u8))?;
+    /// let chain = MipChain::generate(base.clone(), &MipOptions::default())?;
+    /// assert_eq!(chain.base(), &base);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     #[inline]
     pub fn base(&self) -> &Texture2d<T> {
@@ -90,6 +159,16 @@ impl<T: Texel> MipChain<T> {
     }
 
     /// The number of levels (≥ 1).
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, MipOptions, R8, Texture2d};
+    ///
+    /// let options = MipOptions { max_levels: Some(2), ..MipOptions::default() };
+    /// let chain = MipChain::generate(Texture2d::new(16, 16, R8(0))?, &options)?;
+    /// assert_eq!(chain.len(), 2);
+    /// assert!(!chain.is_empty());
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     #[inline]
     pub fn len(&self) -> usize {
@@ -97,6 +176,12 @@ impl<T: Texel> MipChain<T> {
     }
 
     /// Always false: a chain has at least its base. (For clippy's `len_without_is_empty`.)
+    ///
+    /// ```
+    /// # use barytex_texture::{MipChain, R8, Texture2d};
+    /// assert!(!MipChain::single(Texture2d::new(1, 1, R8(0))?).is_empty());
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     #[inline]
     pub fn is_empty(&self) -> bool {
@@ -104,6 +189,16 @@ impl<T: Texel> MipChain<T> {
     }
 
     /// Whether the chain goes down to 1×1.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, MipOptions, R8, Texture2d};
+    ///
+    /// let base = Texture2d::new(4, 4, R8(0))?;
+    /// assert!(MipChain::generate(base.clone(), &MipOptions::default())?.is_complete());
+    /// let partial = MipOptions { max_levels: Some(2), ..MipOptions::default() };
+    /// assert!(!MipChain::generate(base, &partial)?.is_complete());
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn is_complete(&self) -> bool {
         let (w, h) = self.base().size();
@@ -111,6 +206,16 @@ impl<T: Texel> MipChain<T> {
     }
 
     /// The levels, giving up the chain.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, MipOptions, R8, Texture2d};
+    ///
+    /// let chain = MipChain::generate(Texture2d::new(2, 1, R8(9))?, &MipOptions::default())?;
+    /// let levels = chain.into_levels();
+    /// assert_eq!(levels.len(), 2);
+    /// assert_eq!(levels[1].texels(), &[R8(9)]);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn into_levels(self) -> Vec<Texture2d<T>> {
         self.levels

@@ -44,6 +44,25 @@ pub enum MipColorSpace {
 }
 
 /// How [`MipChain::generate`] builds a chain.
+///
+/// ```
+/// use barytex_texture::{MipChain, MipColorSpace, MipOptions, Srgba8, Texture2d};
+///
+/// // Black and white sRGB texels: their 1×1 level depends on what is averaged.
+/// let base = Texture2d::from_fn(2, 2, |x, y| {
+///     Srgba8(if (x + y) % 2 == 0 { [255, 255, 255, 255] } else { [0, 0, 0, 255] })
+/// })?;
+/// let top = |options: &MipOptions| -> Result<Srgba8, barytex_texture::TextureError> {
+///     let chain = MipChain::generate(base.clone(), options)?;
+///     Ok(chain.level(1).and_then(|l| l.texel(0, 0)).unwrap_or_default())
+/// };
+/// // Linear light (the default): half the light, sRGB byte 188.
+/// assert_eq!(top(&MipOptions::default())?, Srgba8([188, 188, 188, 255]));
+/// // sRGB-naive: the mean of the bytes, visibly darker.
+/// let naive = MipOptions { color_space: MipColorSpace::SrgbNaive, ..MipOptions::default() };
+/// assert_eq!(top(&naive)?, Srgba8([128, 128, 128, 255]));
+/// # Ok::<(), barytex_texture::TextureError>(())
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct MipOptions {
     /// The reduction filter.
@@ -89,6 +108,21 @@ impl<T: Texel> MipChain<T> {
     ///
     /// # Errors
     /// When the chain's total size exceeds the limits or an allocation fails.
+    ///
+    /// ```
+    /// use barytex_texture::{Limits, MipChain, MipOptions, R8, Texture2d, TextureError};
+    ///
+    /// // A 16×16 one-byte base: 256 bytes, and 341 with all its levels.
+    /// let base = Texture2d::new(16, 16, R8(0))?;
+    /// let tight = Limits { max_bytes: 300, ..Limits::default() };
+    /// assert!(matches!(
+    ///     MipChain::generate_with_limits(base.clone(), &MipOptions::default(), &tight),
+    ///     Err(TextureError::TooLarge { what: "mip chain bytes", requested: 341, limit: 300 })
+    /// ));
+    /// let base_only = MipOptions { max_levels: Some(1), ..MipOptions::default() };
+    /// assert_eq!(MipChain::generate_with_limits(base, &base_only, &tight)?.len(), 1);
+    /// # Ok::<(), TextureError>(())
+    /// ```
     pub fn generate_with_limits(
         base: Texture2d<T>,
         options: &MipOptions,

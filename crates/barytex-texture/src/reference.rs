@@ -54,6 +54,20 @@ impl<F: Fn(Vec2) -> Vec4> SupersampledReference<F> {
     ///
     /// # Errors
     /// [`TextureError::InvalidParameter`] for `n` outside 1..=32.
+    ///
+    /// ```
+    /// use barytex_texture::TextureError;
+    /// use barytex_texture::reference::{PixelFilter, SupersampledReference};
+    /// use glam::{Vec2, Vec4};
+    ///
+    /// let constant = |_: Vec2| Vec4::ONE;
+    /// assert!(SupersampledReference::new(constant, 32, PixelFilter::Gaussian).is_ok());
+    /// assert!(matches!(
+    ///     SupersampledReference::new(constant, 33, PixelFilter::Box),
+    ///     Err(TextureError::InvalidParameter { what: "n", .. })
+    /// ));
+    /// assert!(SupersampledReference::new(constant, 0, PixelFilter::Box).is_err());
+    /// ```
     pub fn new(function: F, n: u32, filter: PixelFilter) -> Result<Self, TextureError> {
         if !(1..=MAX_SIDE).contains(&n) {
             return Err(TextureError::InvalidParameter {
@@ -69,6 +83,15 @@ impl<F: Fn(Vec2) -> Vec4> SupersampledReference<F> {
     }
 
     /// Samples per pixel (`n²`).
+    ///
+    /// ```
+    /// use barytex_texture::reference::{PixelFilter, SupersampledReference};
+    /// use glam::{Vec2, Vec4};
+    ///
+    /// let truth = SupersampledReference::new(|_: Vec2| Vec4::ONE, 16, PixelFilter::Box)?;
+    /// assert_eq!(truth.samples_per_pixel(), 256);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn samples_per_pixel(&self) -> u32 {
         self.n * self.n

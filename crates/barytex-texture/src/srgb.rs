@@ -15,6 +15,16 @@ mod tables;
 use tables::{DECODE, ENCODE_THRESHOLDS};
 
 /// The 256-entry decode table: `decode_table()[b]` is the linear value of sRGB byte `b`.
+///
+/// ```
+/// use barytex_texture::srgb;
+///
+/// let table = srgb::decode_table();
+/// assert_eq!((table[0], table[255]), (0.0, 1.0));
+/// assert_eq!(table[188], srgb::decode(188));
+/// // Decoding is strictly increasing.
+/// assert!(table.windows(2).all(|w| w[0] < w[1]));
+/// ```
 #[must_use]
 #[inline]
 pub fn decode_table() -> &'static [f32; 256] {
@@ -22,6 +32,15 @@ pub fn decode_table() -> &'static [f32; 256] {
 }
 
 /// sRGB byte → linear value in [0, 1], exactly rounded.
+///
+/// ```
+/// use barytex_texture::srgb;
+///
+/// // Byte 10 is on the linear segment: (10/255) / 12.92.
+/// assert_eq!(srgb::decode(10), (10.0_f64 / 255.0 / 12.92) as f32);
+/// // Byte 188 is about 50 % linear light.
+/// assert!((srgb::decode(188) - 0.5).abs() < 0.003);
+/// ```
 #[must_use]
 #[inline]
 pub fn decode(byte: u8) -> f32 {
@@ -30,6 +49,15 @@ pub fn decode(byte: u8) -> f32 {
 
 /// Linear value → nearest sRGB byte, correctly rounded. Values ≤ 0 and NaN give 0, values ≥ 1 give
 /// 255.
+///
+/// ```
+/// use barytex_texture::srgb;
+///
+/// assert_eq!(srgb::encode(0.5), 188);
+/// // encode inverts decode for every byte.
+/// assert!((0..=255_u8).all(|b| srgb::encode(srgb::decode(b)) == b));
+/// assert_eq!((srgb::encode(f32::NAN), srgb::encode(-1.0), srgb::encode(2.0)), (0, 0, 255));
+/// ```
 #[must_use]
 #[inline]
 pub fn encode(linear: f32) -> u8 {
@@ -73,6 +101,16 @@ const fn bucket_starts() -> [u8; BUCKETS] {
 
 /// The continuous sRGB → linear transfer function on [0, 1] (values outside are clamped, NaN gives
 /// 0).
+///
+/// ```
+/// use barytex_texture::srgb;
+///
+/// assert_eq!(srgb::to_linear(0.0), 0.0);
+/// assert_eq!(srgb::to_linear(1.0), 1.0);
+/// // The curve is about 0.214 at sRGB 0.5, well below 0.5.
+/// assert!((srgb::to_linear(0.5) - 0.214_041).abs() < 1e-6);
+/// assert_eq!(srgb::to_linear(f32::NAN), 0.0);
+/// ```
 #[must_use]
 pub fn to_linear(srgb: f32) -> f32 {
     let c = f64::from(clamp_unit(srgb));
@@ -86,6 +124,17 @@ pub fn to_linear(srgb: f32) -> f32 {
 
 /// The continuous linear → sRGB transfer function on [0, 1] (values outside are clamped, NaN gives
 /// 0).
+///
+/// ```
+/// use barytex_texture::srgb;
+///
+/// // The inverse of to_linear, within a couple of ulps.
+/// let s = 0.3_f32;
+/// assert!((srgb::from_linear(srgb::to_linear(s)) - s).abs() <= 2.0 * f32::EPSILON);
+/// // Linear 0.5 is about sRGB 0.735 (byte 188 = round(0.735 · 255)).
+/// assert!((srgb::from_linear(0.5) - 0.735_357).abs() < 1e-5);
+/// assert_eq!(srgb::from_linear(7.0), 1.0);
+/// ```
 #[must_use]
 pub fn from_linear(linear: f32) -> f32 {
     let l = f64::from(clamp_unit(linear));

@@ -27,6 +27,15 @@ pub enum TextureFormat {
 
 impl TextureFormat {
     /// Bytes per texel.
+    ///
+    /// ```
+    /// use barytex_texture::{Rgba16f, Srgba8, Texel, TextureFormat};
+    ///
+    /// assert_eq!(TextureFormat::R8Unorm.bytes_per_texel(), 1);
+    /// assert_eq!(Srgba8::FORMAT.bytes_per_texel(), 4);
+    /// // The size of the Rust type is the size of the stored texel.
+    /// assert_eq!(Rgba16f::FORMAT.bytes_per_texel(), size_of::<Rgba16f>());
+    /// ```
     #[must_use]
     pub const fn bytes_per_texel(self) -> usize {
         match self {
@@ -39,6 +48,13 @@ impl TextureFormat {
     }
 
     /// Whether colour channels are sRGB-encoded.
+    ///
+    /// ```
+    /// use barytex_texture::{Rgba8, Srgba8, Texel};
+    ///
+    /// assert!(Srgba8::FORMAT.is_srgb());
+    /// assert!(!Rgba8::FORMAT.is_srgb());
+    /// ```
     #[must_use]
     pub const fn is_srgb(self) -> bool {
         matches!(self, Self::Rgba8UnormSrgb)

@@ -23,6 +23,21 @@ impl<T: Texel> Texture2dArray<T> {
     ///
     /// # Errors
     /// [`TextureError::InvalidParameter`] for no layers or layers of different sizes.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, R8, SamplerDescriptor, Texture2d, Texture2dArray};
+    /// use glam::Vec2;
+    ///
+    /// // Three 2×2 layers holding 0, 100 and 200.
+    /// let layer = |v: u8| Texture2d::new(2, 2, R8(v)).map(MipChain::single);
+    /// let array = Texture2dArray::new(vec![layer(0)?, layer(100)?, layer(200)?], SamplerDescriptor::bilinear())?;
+    /// assert_eq!(array.layer_count(), 3);
+    /// // Layers of different sizes are refused, and so is an empty array.
+    /// let odd = Texture2d::new(4, 4, R8(0)).map(MipChain::single)?;
+    /// assert!(Texture2dArray::new(vec![layer(0)?, odd], SamplerDescriptor::default()).is_err());
+    /// assert!(Texture2dArray::<R8>::new(Vec::new(), SamplerDescriptor::default()).is_err());
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     pub fn new(
         layers: Vec<MipChain<T>>,
         descriptor: SamplerDescriptor,
@@ -52,12 +67,40 @@ impl<T: Texel> Texture2dArray<T> {
     }
 
     /// The number of layers.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, R8, SamplerDescriptor, Texture2d, Texture2dArray};
+    /// use glam::Vec2;
+    ///
+    /// // Three 2×2 layers holding 0, 100 and 200.
+    /// let layer = |v: u8| Texture2d::new(2, 2, R8(v)).map(MipChain::single);
+    /// let array = Texture2dArray::new(vec![layer(0)?, layer(100)?, layer(200)?], SamplerDescriptor::bilinear())?;
+    /// assert_eq!(array.layer_count(), 3);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn layer_count(&self) -> usize {
         self.layers.len()
     }
 
     /// The layer a layer coordinate selects.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, R8, SamplerDescriptor, Texture2d, Texture2dArray};
+    /// use glam::Vec2;
+    ///
+    /// // Three 2×2 layers holding 0, 100 and 200.
+    /// let layer = |v: u8| Texture2d::new(2, 2, R8(v)).map(MipChain::single);
+    /// let array = Texture2dArray::new(vec![layer(0)?, layer(100)?, layer(200)?], SamplerDescriptor::bilinear())?;
+    /// // Round to nearest even, then clamp (Vulkan).
+    /// assert_eq!(array.layer_index(0.5), 0);
+    /// assert_eq!(array.layer_index(1.5), 2);
+    /// assert_eq!(array.layer_index(1.4), 1);
+    /// assert_eq!(array.layer_index(7.0), 2);
+    /// assert_eq!(array.layer_index(-3.0), 0);
+    /// assert_eq!(array.layer_index(f32::NAN), 0);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn layer_index(&self, layer: f32) -> usize {
         let last = self.layers.len() - 1;
@@ -72,12 +115,37 @@ impl<T: Texel> Texture2dArray<T> {
     }
 
     /// `Sampler::sample` on the selected layer.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, R8, SamplerDescriptor, Texture2d, Texture2dArray};
+    /// use glam::Vec2;
+    ///
+    /// // Three 2×2 layers holding 0, 100 and 200.
+    /// let layer = |v: u8| Texture2d::new(2, 2, R8(v)).map(MipChain::single);
+    /// let array = Texture2dArray::new(vec![layer(0)?, layer(100)?, layer(200)?], SamplerDescriptor::bilinear())?;
+    /// let c = array.sample(Vec2::splat(0.5), 1.2, Vec2::ZERO, Vec2::ZERO);
+    /// assert_eq!(c.x, 100.0 / 255.0);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn sample(&self, uv: Vec2, layer: f32, ddx: Vec2, ddy: Vec2) -> Vec4 {
         self.layers[self.layer_index(layer)].sample(uv, ddx, ddy)
     }
 
     /// `Sampler::sample_level` on the selected layer.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, R8, SamplerDescriptor, Texture2d, Texture2dArray};
+    /// use glam::Vec2;
+    ///
+    /// // Three 2×2 layers holding 0, 100 and 200.
+    /// let layer = |v: u8| Texture2d::new(2, 2, R8(v)).map(MipChain::single);
+    /// let array = Texture2dArray::new(vec![layer(0)?, layer(100)?, layer(200)?], SamplerDescriptor::bilinear())?;
+    /// assert_eq!(array.sample_level(Vec2::splat(0.5), 2.0, 0.0).x, 200.0 / 255.0);
+    /// // Layers are never blended: 0.5 rounds to layer 0.
+    /// assert_eq!(array.sample_level(Vec2::splat(0.5), 0.5, 0.0).x, 0.0);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn sample_level(&self, uv: Vec2, layer: f32, lod: f32) -> Vec4 {
         self.layers[self.layer_index(layer)].sample_level(uv, lod)
@@ -98,6 +166,21 @@ impl<T: Texel> Texture3d<T> {
     ///
     /// # Errors
     /// A zero side, a size beyond the limits, or a failed allocation.
+    ///
+    /// ```
+    /// use barytex_texture::{Limits, R32f, Texture3d, TextureError};
+    ///
+    /// let volume = Texture3d::from_fn([4, 3, 2], &Limits::default(), |x, y, z| R32f((x + 10 * y + 100 * z) as f32))?;
+    /// assert_eq!(volume.size(), [4, 3, 2]);
+    /// assert_eq!(volume.texel(3, 2, 1), Some(R32f(123.0)));
+    /// // The depth counts against max_height.
+    /// let flat = Limits { max_height: 2, ..Limits::default() };
+    /// assert!(matches!(
+    ///     Texture3d::from_fn([2, 2, 3], &flat, |_, _, _| R32f(0.0)),
+    ///     Err(TextureError::TooLarge { what: "height", .. })
+    /// ));
+    /// # Ok::<(), TextureError>(())
+    /// ```
     pub fn from_fn(
         size: [u32; 3],
         limits: &Limits,
@@ -126,12 +209,28 @@ impl<T: Texel> Texture3d<T> {
     }
 
     /// `[width, height, depth]`.
+    ///
+    /// ```
+    /// # use barytex_texture::{Limits, R8, Texture3d};
+    /// let volume = Texture3d::from_fn([5, 1, 7], &Limits::default(), |_, _, _| R8(0))?;
+    /// assert_eq!(volume.size(), [5, 1, 7]);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn size(&self) -> [u32; 3] {
         self.size
     }
 
     /// Texel (x, y, z); `None` outside.
+    ///
+    /// ```
+    /// use barytex_texture::{Limits, R8, Texture3d};
+    ///
+    /// let volume = Texture3d::from_fn([2, 2, 2], &Limits::default(), |x, y, z| R8((x + 2 * y + 4 * z) as u8))?;
+    /// assert_eq!(volume.texel(1, 0, 1), Some(R8(5)));
+    /// assert_eq!(volume.texel(0, 0, 2), None);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn texel(&self, x: u32, y: u32, z: u32) -> Option<T> {
         let [w, h, d] = self.size;
@@ -147,6 +246,19 @@ impl<T: Texel> Texture3d<T> {
     /// Trilinear weights are the exact-coordinate weights rounded once to f32 (as in 2D); the
     /// blend is seven lerps `a + (b − a)·t`, exact at texel centres and on constants, and exact
     /// on trilinear functions at dyadic points (`tests/volume.rs`).
+    ///
+    /// ```
+    /// use barytex_texture::{Limits, R32f, SamplerDescriptor, Texture3d};
+    /// use glam::Vec3;
+    ///
+    /// let volume = Texture3d::from_fn([2, 2, 2], &Limits::default(), |x, y, z| R32f((x + 2 * y + 4 * z) as f32))?;
+    /// // Trilinear at the centre: the mean of the eight texels, (0 + … + 7)/8.
+    /// assert_eq!(volume.sample(Vec3::splat(0.5), &SamplerDescriptor::bilinear()).x, 3.5);
+    /// // Nearest: the texel containing the point, here (1, 0, 1).
+    /// assert_eq!(volume.sample(Vec3::new(0.75, 0.25, 0.75), &SamplerDescriptor::default()).x, 5.0);
+    /// assert_eq!(volume.sample(Vec3::NAN, &SamplerDescriptor::default()), glam::Vec4::ZERO);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn sample(&self, uvw: Vec3, descriptor: &SamplerDescriptor) -> Vec4 {
         if !uvw.is_finite() {

@@ -19,6 +19,17 @@ pub struct Checkerboard {
 
 impl Checkerboard {
     /// The colour at `uv`; non-finite input gives transparent black.
+    ///
+    /// ```
+    /// use barytex_texture::procedural::Checkerboard;
+    /// use glam::{Vec2, Vec4};
+    ///
+    /// let board = Checkerboard { even: Vec4::ONE, odd: Vec4::ZERO, checks: 4.0 };
+    /// assert_eq!(board.at(Vec2::new(0.1, 0.1)), Vec4::ONE); // square (0, 0)
+    /// assert_eq!(board.at(Vec2::new(0.3, 0.1)), Vec4::ZERO); // square (1, 0)
+    /// assert_eq!(board.at(Vec2::new(0.3, 0.3)), Vec4::ONE); // square (1, 1)
+    /// assert_eq!(board.at(Vec2::new(f32::NAN, 0.0)), Vec4::ZERO);
+    /// ```
     #[must_use]
     pub fn at(&self, uv: Vec2) -> Vec4 {
         let p = uv * self.checks;
@@ -72,6 +83,21 @@ fn square_mean(lo: f64, hi: f64) -> f64 {
 
 impl BoxFilteredCheckerboard {
     /// The exact average over the box `uv ± half_extent`.
+    ///
+    /// ```
+    /// use barytex_texture::procedural::{BoxFilteredCheckerboard, Checkerboard};
+    /// use glam::{Vec2, Vec4};
+    ///
+    /// let board = BoxFilteredCheckerboard(Checkerboard { even: Vec4::ONE, odd: Vec4::ZERO, checks: 4.0 });
+    /// // A box over whole squares is half and half.
+    /// let grey = board.average(Vec2::splat(0.5), Vec2::splat(0.25));
+    /// assert!((grey - Vec4::splat(0.5)).abs().max_element() < 1e-6);
+    /// // A box inside one square is that square's colour.
+    /// assert_eq!(board.average(Vec2::splat(0.125), Vec2::splat(0.05)), Vec4::ONE);
+    /// // A box over three squares of one row (even, odd, even): two thirds.
+    /// let third = board.average(Vec2::new(0.375, 0.125), Vec2::new(0.375, 0.05));
+    /// assert!((third.x - 2.0 / 3.0).abs() < 1e-6);
+    /// ```
     #[must_use]
     pub fn average(&self, uv: Vec2, half_extent: Vec2) -> Vec4 {
         let c = &self.0;

@@ -30,6 +30,23 @@ fn hash(x: i64, y: i64, seed: u32) -> f32 {
 impl ValueNoise {
     /// The noise value at `uv` as an opaque grey; non-finite input gives transparent black, and
     /// huge finite input (beyond 2⁶³ lattice cells) a grey value, never a panic.
+    ///
+    /// ```
+    /// use barytex_texture::procedural::ValueNoise;
+    /// use glam::{Vec2, Vec4};
+    ///
+    /// let noise = ValueNoise { frequency: 8.0, seed: 7 };
+    /// let g = noise.at(Vec2::new(0.3, 0.6));
+    /// // Grey, opaque, in [0, 1], and the same every time.
+    /// assert!(g.x == g.y && g.y == g.z && g.w == 1.0 && (0.0..=1.0).contains(&g.x));
+    /// assert_eq!(noise.at(Vec2::new(0.3, 0.6)), g);
+    /// // Continuous: a tiny step changes the value only slightly.
+    /// assert!((noise.at(Vec2::new(0.300_01, 0.6)).x - g.x).abs() < 1e-3);
+    /// // Another seed, another pattern (at a lattice point the value is the hash itself).
+    /// let other = ValueNoise { seed: 8, ..noise };
+    /// assert_ne!(other.at(Vec2::new(0.25, 0.5)), noise.at(Vec2::new(0.25, 0.5)));
+    /// assert_eq!(noise.at(Vec2::splat(f32::INFINITY)), Vec4::ZERO);
+    /// ```
     #[must_use]
     pub fn at(&self, uv: Vec2) -> Vec4 {
         let p = uv * self.frequency;

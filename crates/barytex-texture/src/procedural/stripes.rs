@@ -22,6 +22,20 @@ pub struct Stripes {
 
 impl Stripes {
     /// The colour at `uv`; non-finite input gives transparent black.
+    ///
+    /// ```
+    /// use barytex_texture::procedural::Stripes;
+    /// use glam::{Vec2, Vec4};
+    ///
+    /// // Vertical stripes (varying along u), 0.25 wide on a period of 1.
+    /// let stripes = Stripes { on: Vec4::ONE, off: Vec4::ZERO, angle: 0.0, period: 1.0, duty: 0.25 };
+    /// assert_eq!(stripes.at(Vec2::new(0.1, 0.9)), Vec4::ONE);
+    /// assert_eq!(stripes.at(Vec2::new(0.3, 0.9)), Vec4::ZERO);
+    /// assert_eq!(stripes.at(Vec2::new(1.1, 0.0)), Vec4::ONE); // the next period
+    /// // Turned a quarter turn, they vary along v instead.
+    /// let turned = Stripes { angle: std::f32::consts::FRAC_PI_2, ..stripes };
+    /// assert_eq!(turned.at(Vec2::new(0.3, 0.1)), Vec4::ONE);
+    /// ```
     #[must_use]
     pub fn at(&self, uv: Vec2) -> Vec4 {
         let (s, c) = self.angle.sin_cos();

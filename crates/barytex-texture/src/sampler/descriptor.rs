@@ -157,6 +157,20 @@ impl Default for SamplerDescriptor {
 
 impl SamplerDescriptor {
     /// Bilinear within a level, nearest level: wgpu's common "linear" sampler without mip blending.
+    ///
+    /// ```
+    /// use barytex_texture::{R32f, Sampler, SamplerDescriptor, Texture2d, TextureSampler};
+    /// use glam::Vec2;
+    ///
+    /// // Two texels, 0 and 1: halfway between their centres reads 0.5.
+    /// let texture = Texture2d::from_texels(2, 1, vec![R32f(0.0), R32f(1.0)])?;
+    /// let linear = TextureSampler::single_level(texture.clone(), SamplerDescriptor::bilinear());
+    /// assert_eq!(linear.sample_level(Vec2::new(0.5, 0.5), 0.0).x, 0.5);
+    /// // The default sampler is nearest: the same point lies in texel 1.
+    /// let nearest = TextureSampler::single_level(texture, SamplerDescriptor::default());
+    /// assert_eq!(nearest.sample_level(Vec2::new(0.5, 0.5), 0.0).x, 1.0);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn bilinear() -> Self {
         Self {
@@ -167,6 +181,23 @@ impl SamplerDescriptor {
     }
 
     /// Trilinear: bilinear within levels, linear between them.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, MipOptions, R32f, Sampler, SamplerDescriptor, Texture2d, TextureSampler};
+    /// use glam::Vec2;
+    ///
+    /// // Level 0 is [0, 1], level 1 their mean 0.5; at texel 0's centre and LOD ½:
+    /// let base = Texture2d::from_texels(2, 1, vec![R32f(0.0), R32f(1.0)])?;
+    /// let chain = MipChain::generate(base, &MipOptions::default())?;
+    /// let uv = Vec2::new(0.25, 0.5);
+    /// // trilinear blends the two levels halfway,
+    /// let tri = TextureSampler::new(chain.clone(), SamplerDescriptor::trilinear());
+    /// assert_eq!(tri.sample_level(uv, 0.5).x, 0.25);
+    /// // bilinear picks the nearest level (Vulkan: ⌈λ + ½⌉ − 1 = 0).
+    /// let bi = TextureSampler::new(chain, SamplerDescriptor::bilinear());
+    /// assert_eq!(bi.sample_level(uv, 0.5).x, 0.0);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn trilinear() -> Self {
         Self {
@@ -176,6 +207,18 @@ impl SamplerDescriptor {
     }
 
     /// Trilinear with GPU-style anisotropic probes, ratio clamped to `max_anisotropy` (1–16).
+    ///
+    /// ```
+    /// use barytex_texture::SamplerDescriptor;
+    /// use barytex_texture::sampler::MipmapFilterMode;
+    ///
+    /// let d = SamplerDescriptor::anisotropic(8);
+    /// assert_eq!(d.anisotropy_clamp, 8);
+    /// assert_eq!(d.mipmap_filter, MipmapFilterMode::Linear);
+    /// // The ratio is clamped to 1..=16.
+    /// assert_eq!(SamplerDescriptor::anisotropic(64).anisotropy_clamp, 16);
+    /// assert_eq!(SamplerDescriptor::anisotropic(0).anisotropy_clamp, 1);
+    /// ```
     #[must_use]
     pub fn anisotropic(max_anisotropy: u16) -> Self {
         Self {
@@ -185,6 +228,27 @@ impl SamplerDescriptor {
     }
 
     /// The same address mode on every axis.
+    ///
+    /// ```
+    /// use barytex_texture::sampler::AddressMode;
+    /// use barytex_texture::{R32f, Sampler, SamplerDescriptor, Texture2d, TextureSampler};
+    /// use glam::Vec2;
+    ///
+    /// let texture = Texture2d::from_texels(2, 1, vec![R32f(0.0), R32f(1.0)])?;
+    /// let at = |mode| {
+    ///     let d = SamplerDescriptor::default().with_address_mode(mode);
+    ///     TextureSampler::single_level(texture.clone(), d).sample_level(Vec2::new(1.25, 0.5), 0.0).x
+    /// };
+    /// // u = 1.25 is texel index 2: repeat reads texel 0, clamp the last texel, mirror texel 1.
+    /// assert_eq!(at(AddressMode::Repeat), 0.0);
+    /// assert_eq!(at(AddressMode::ClampToEdge), 1.0);
+    /// assert_eq!(at(AddressMode::MirrorRepeat), 1.0);
+    /// // The border is transparent black by default.
+    /// let border = SamplerDescriptor::default().with_address_mode(AddressMode::ClampToBorder);
+    /// assert_eq!(border.address_mode_v, AddressMode::ClampToBorder);
+    /// assert_eq!(at(AddressMode::ClampToBorder), 0.0);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn with_address_mode(self, mode: AddressMode) -> Self {
         Self {

@@ -16,6 +16,16 @@ use glam::Vec2;
 /// # Accuracy
 /// Within 2 ulp of `log₂` of the exactly computed `ρ` (the lengths are computed in f64 from f32
 /// inputs, the logarithm by `f64::log2`, then rounded once).
+///
+/// ```
+/// use barytex_texture::sampler::lod::lod;
+/// use glam::Vec2;
+///
+/// // On a 256² texture, one pixel spanning 4 texels along x (and 1 along y) is level 2.
+/// assert_eq!(lod(Vec2::new(4.0 / 256.0, 0.0), Vec2::new(0.0, 1.0 / 256.0), (256, 256)), 2.0);
+/// assert_eq!(lod(Vec2::ZERO, Vec2::ZERO, (256, 256)), f32::NEG_INFINITY);
+/// assert_eq!(lod(Vec2::NAN, Vec2::ZERO, (256, 256)), f32::INFINITY);
+/// ```
 #[must_use]
 pub fn lod(ddx: Vec2, ddy: Vec2, size: (u32, u32)) -> f32 {
     let rho_squared = footprint_squared(ddx, ddy, size);

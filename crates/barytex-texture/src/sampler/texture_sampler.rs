@@ -61,6 +61,23 @@ impl<T: Texel> TextureSampler<T> {
     /// A sampler over `chain`. The descriptor is sanitised: NaN LOD clamps and bias become the
     /// defaults (0, 32, 0), `lod_max_clamp < lod_min_clamp` is raised to `lod_min_clamp`, and
     /// `anisotropy_clamp` is clamped to 1..=16.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, R8, SamplerDescriptor, Texture2d, TextureSampler};
+    ///
+    /// let chain = MipChain::single(Texture2d::new(4, 4, R8(0))?);
+    /// let wild = SamplerDescriptor {
+    ///     lod_min_clamp: 3.0,
+    ///     lod_max_clamp: 1.0, // below the minimum
+    ///     lod_bias: f32::NAN,
+    ///     anisotropy_clamp: 100,
+    ///     ..SamplerDescriptor::default()
+    /// };
+    /// let d = *TextureSampler::new(chain, wild).descriptor();
+    /// assert_eq!((d.lod_min_clamp, d.lod_max_clamp, d.lod_bias), (3.0, 3.0, 0.0));
+    /// assert_eq!(d.anisotropy_clamp, 16);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn new(chain: MipChain<T>, descriptor: SamplerDescriptor) -> Self {
         let mut d = descriptor;
@@ -84,18 +101,50 @@ impl<T: Texel> TextureSampler<T> {
     }
 
     /// A sampler over a single-level texture (no mip chain: minification aliases).
+    ///
+    /// ```
+    /// use barytex_texture::{R8, Sampler, SamplerDescriptor, Texture2d, TextureSampler};
+    /// use glam::Vec2;
+    ///
+    /// let texture = Texture2d::from_fn(4, 4, |x, _| R8(if x % 2 == 0 { 0 } else { 255 }))?;
+    /// let sampler = TextureSampler::single_level(texture, SamplerDescriptor::default());
+    /// assert_eq!(sampler.chain().len(), 1);
+    /// // Even a 4-texel-wide footprint reads a single texel: minification aliases.
+    /// let c = sampler.sample(Vec2::new(0.375, 0.5), Vec2::new(1.0, 0.0), Vec2::new(0.0, 1.0));
+    /// assert_eq!(c.x, 1.0);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn single_level(texture: Texture2d<T>, descriptor: SamplerDescriptor) -> Self {
         Self::new(MipChain::single(texture), descriptor)
     }
 
     /// The mip chain.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, MipOptions, R8, SamplerDescriptor, Texture2d, TextureSampler};
+    ///
+    /// let chain = MipChain::generate(Texture2d::new(8, 8, R8(1))?, &MipOptions::default())?;
+    /// let sampler = TextureSampler::new(chain.clone(), SamplerDescriptor::trilinear());
+    /// assert_eq!(sampler.chain(), &chain);
+    /// assert_eq!(sampler.chain().len(), 4);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn chain(&self) -> &MipChain<T> {
         &self.chain
     }
 
     /// The (sanitised) descriptor.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, R8, SamplerDescriptor, Texture2d, TextureSampler};
+    ///
+    /// let chain = MipChain::single(Texture2d::new(1, 1, R8(0))?);
+    /// let sampler = TextureSampler::new(chain, SamplerDescriptor::trilinear());
+    /// assert_eq!(sampler.descriptor(), &SamplerDescriptor::trilinear());
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn descriptor(&self) -> &SamplerDescriptor {
         &self.descriptor
@@ -103,6 +152,21 @@ impl<T: Texel> TextureSampler<T> {
 
     /// The level of detail for a footprint: `log₂ ρ` (see [`lod::lod`]) plus the descriptor's
     /// bias plus `extra_bias`, clamped to `[lod_min_clamp, lod_max_clamp]`.
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, R8, SamplerDescriptor, Texture2d, TextureSampler};
+    /// use glam::Vec2;
+    ///
+    /// let chain = MipChain::single(Texture2d::new(8, 8, R8(0))?);
+    /// let d = SamplerDescriptor { lod_bias: 0.25, lod_max_clamp: 2.0, ..SamplerDescriptor::trilinear() };
+    /// let sampler = TextureSampler::new(chain, d);
+    /// // A pixel spanning 2 texels: log₂ 2 = 1, plus the descriptor's bias, plus the extra bias.
+    /// let (ddx, ddy) = (Vec2::new(2.0 / 8.0, 0.0), Vec2::new(0.0, 2.0 / 8.0));
+    /// assert_eq!(sampler.lod(ddx, ddy, 0.5), 1.75);
+    /// // Clamped to lod_max_clamp.
+    /// assert_eq!(sampler.lod(ddx, ddy, 4.0), 2.0);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn lod(&self, ddx: Vec2, ddy: Vec2, extra_bias: f32) -> f32 {
         let raw = lod::lod(ddx, ddy, self.chain.base().size());
@@ -110,6 +174,22 @@ impl<T: Texel> TextureSampler<T> {
     }
 
     /// `sample` with an extra LOD bias (GLSL `texture(s, uv, bias)`).
+    ///
+    /// ```
+    /// use barytex_texture::{MipChain, MipOptions, R32f, Sampler, SamplerDescriptor, Texture2d, TextureSampler};
+    /// use glam::Vec2;
+    ///
+    /// let base = Texture2d::from_texels(2, 1, vec![R32f(0.0), R32f(1.0)])?;
+    /// let chain = MipChain::generate(base, &MipOptions::default())?;
+    /// let sampler = TextureSampler::new(chain, SamplerDescriptor::trilinear());
+    /// // One texel per pixel (LOD 0) at texel 0's centre reads 0; a bias of 1 reads level 1, the mean.
+    /// let (uv, ddx, ddy) = (Vec2::new(0.25, 0.5), Vec2::new(0.5, 0.0), Vec2::new(0.0, 1.0));
+    /// assert_eq!(sampler.sample(uv, ddx, ddy).x, 0.0);
+    /// assert_eq!(sampler.sample_bias(uv, ddx, ddy, 1.0).x, 0.5);
+    /// // A non-finite bias is ignored.
+    /// assert_eq!(sampler.sample_bias(uv, ddx, ddy, f32::NAN), sampler.sample(uv, ddx, ddy));
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn sample_bias(&self, uv: Vec2, ddx: Vec2, ddy: Vec2, bias: f32) -> Vec4 {
         let bias = if bias.is_finite() { bias } else { 0.0 };
@@ -201,6 +281,25 @@ impl<T: Texel> TextureSampler<T> {
     /// descriptor's filters (bilinear = 2×2 percentage-closer filtering) and mip selection. Texels
     /// outside under `ClampToBorder` compare the border colour's first channel. `None` when the
     /// descriptor has no comparison function; a non-finite `uv` or NaN reference gives 0.
+    ///
+    /// ```
+    /// use barytex_texture::sampler::CompareFunction;
+    /// use barytex_texture::{R32f, SamplerDescriptor, Texture2d, TextureSampler};
+    /// use glam::Vec2;
+    ///
+    /// // A 2×1 depth map: 0.2 on the left, 0.8 on the right.
+    /// let depth = Texture2d::from_texels(2, 1, vec![R32f(0.2), R32f(0.8)])?;
+    /// let shadow = SamplerDescriptor { compare: Some(CompareFunction::Less), ..SamplerDescriptor::bilinear() };
+    /// let sampler = TextureSampler::single_level(depth.clone(), shadow);
+    /// // Reference 0.5 passes (0.5 < depth) on the right only; between the texels PCF gives ½.
+    /// assert_eq!(sampler.sample_compare_level(Vec2::new(0.25, 0.5), 0.5, 0.0), Some(0.0));
+    /// assert_eq!(sampler.sample_compare_level(Vec2::new(0.75, 0.5), 0.5, 0.0), Some(1.0));
+    /// assert_eq!(sampler.sample_compare_level(Vec2::new(0.5, 0.5), 0.5, 0.0), Some(0.5));
+    /// // No comparison function, no comparison.
+    /// let plain = TextureSampler::single_level(depth, SamplerDescriptor::bilinear());
+    /// assert_eq!(plain.sample_compare_level(Vec2::splat(0.5), 0.5, 0.0), None);
+    /// # Ok::<(), barytex_texture::TextureError>(())
+    /// ```
     #[must_use]
     pub fn sample_compare_level(&self, uv: Vec2, reference: f32, lod: f32) -> Option<f32> {
         let compare = self.descriptor.compare?;
