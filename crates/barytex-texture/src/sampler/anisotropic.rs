@@ -26,6 +26,11 @@ pub(crate) struct ProbePlan {
     pub(crate) count: usize,
     pub(crate) lod: f32,
     major: Vec2,
+    /// Whether the footprint's major axis spans more than one texel of the base level: only
+    /// then are the probes spread along it. A probe level at or below 0 does not mean the pixel
+    /// is magnified — `count` probes one texel apart each sit at level 0 — so the single-probe
+    /// shortcut is decided on the major axis itself.
+    pub(crate) spread: bool,
 }
 
 impl ProbePlan {
@@ -75,6 +80,7 @@ impl Footprint {
             count: count as usize,
             lod: (self.major_texels / count).log2(),
             major: self.major,
+            spread: self.major_texels > 1.0,
         }
     }
 

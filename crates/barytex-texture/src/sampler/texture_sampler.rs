@@ -220,7 +220,7 @@ impl<T: Texel> TextureSampler<T> {
                     AnisotropicFilter::Probes => {
                         let plan = footprint.probes(max);
                         let lod = self.clamp_lod(plan.lod + bias);
-                        if lod <= 0.0 {
+                        if plan.count == 1 || !plan.spread {
                             unpremultiply(self.filter_premultiplied(uv, lod))
                         } else {
                             let mut sum = Vec4::ZERO;
