@@ -137,7 +137,7 @@ fn barycentric_examples(out: &mut impl Write) -> Result {
         [rat(2, 1), rat(3, 1)],
         [rat(3, 1), rat(1, 1)],
     ];
-    let tri = tri_q.clone().map(|[x, y]| Vec2::new(to_f32(x), to_f32(y)));
+    let tri = tri_q.map(|[x, y]| Vec2::new(to_f32(x), to_f32(y)));
     let points = [(2, 1, 3, 1), (11, 3, 2, 1), (3, 2, 3, 2), (1, 1, 0, 1)];
     writeln!(
         out,
