@@ -126,7 +126,7 @@ pub(crate) mod methods {
 
     /// The textbook f32 determinant `(b − a) × (c − a)`: fast, but its sign is wrong near
     /// collinear points (on Kettner's 65 536 grid points, 5 752 to 11 972 wrong signs depending
-    /// on which point is the pivot; see `barytex report`).
+    /// on which point is the pivot; see `barytex-report`).
     ///
     /// # Accuracy
     /// No sign guarantee; kept for the speed-vs-error report. Returns `Collinear` for NaN input.

@@ -1,35 +1,82 @@
 //! `barytex examples`: the worked examples of S. R. Buss, *3D Computer Graphics: A
 //! Mathematical Introduction with OpenGL* (2003), ch. IV, numbered as in A. Denisjuk's lecture
 //! *Interpolacja i teksturowanie* (University of Warmia and Mazury), run through
-//! `barytex-interp`, each checked against exact rational arithmetic, and a summary of Kettner's
-//! orientation grid. Every number is computed at run time.
+//! `barytex-interp`, each checked against exact rational arithmetic ([`crate::exact`]), and a
+//! summary of Kettner's orientation grid. Every number is computed at run time.
 
 use std::io::Write;
 
 use barytex_interp::hard_cases::kettner_grid;
 use barytex_interp::methods::{orient2d_dop_f32, orient2d_naive_f32};
 use barytex_interp::{InverseBilinear, barycentric_2d, bilinear, inverse_bilinear_2d, orient2d};
-use barytex_testkit::exact::{self, Q};
-use barytex_testkit::invariants::inverse_bilinear_error;
-use barytex_testkit::reference::inverse_bilinear_newton;
-use barytex_testkit::ulp::ulp_f32;
 use glam::{DVec2, Vec2};
+
+use crate::exact::{self, Q};
 
 type Result = std::result::Result<(), Box<dyn std::error::Error>>;
 
-/// A rational `n/d` from small integers (exact: they are f32 integers).
+/// A rational `n/d` from small integers.
 fn rat(n: i32, d: i32) -> Q {
-    exact::qf(n as f32) / exact::qf(d as f32)
+    Q::new(n.into(), d.into())
+}
+
+/// The exact value of an f32 the examples computed (small and finite).
+fn qf(x: f32) -> std::result::Result<Q, String> {
+    Q::from_f32(x).ok_or_else(|| format!("{x:e} has no exact fraction here"))
 }
 
 /// The f32 nearest a rational (through f64; the examples' values have no double-rounding ties).
-fn to_f32(x: &Q) -> f32 {
-    exact::to_f64(x) as f32
+fn to_f32(x: Q) -> f32 {
+    x.to_f64() as f32
 }
 
-/// `(b − a) × (c − a)` in rationals.
-fn cross(a: &[Q; 2], b: &[Q; 2], c: &[Q; 2]) -> Q {
-    (&b[0] - &a[0]) * (&c[1] - &a[1]) - (&b[1] - &a[1]) * (&c[0] - &a[0])
+/// The spacing of f32 values at `x`'s magnitude: `ulp(x)`, with `ulp(0)` the smallest
+/// subnormal (IEEE 754 binary32: 2^(⌊log₂|x|⌋ − 23) for normal magnitudes).
+fn ulp_f32(x: f64) -> f64 {
+    let x = x.abs();
+    if !x.is_finite() {
+        return f64::INFINITY;
+    }
+    if x < f64::from(f32::MIN_POSITIVE) {
+        return f64::from(f32::from_bits(1));
+    }
+    let exponent = ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    2f64.powi(exponent - 23)
+}
+
+/// The bilinear map of `quad` at `ab`, in f64.
+fn bilinear_f64([x, y, z, w]: [DVec2; 4], ab: DVec2) -> DVec2 {
+    let (a, b) = (ab.x, ab.y);
+    x * ((1.0 - a) * (1.0 - b)) + y * (a * (1.0 - b)) + z * (a * b) + w * ((1.0 - a) * b)
+}
+
+/// The reference preimage of `p` under the bilinear map of `quad`: Newton's method in f64 from
+/// `start` (the examples start from the given parameters, near the answer, where it converges
+/// quadratically). `None` when the Jacobian is singular, or when after 50 steps the residual is
+/// above 1e-14 of the quad's size.
+fn inverse_bilinear_newton(p: DVec2, quad: [DVec2; 4], start: DVec2) -> Option<DVec2> {
+    let [x, y, z, w] = quad;
+    let mut ab = start;
+    for _ in 0..50 {
+        let r = bilinear_f64(quad, ab) - p;
+        let d_alpha = (y - x) * (1.0 - ab.y) + (z - w) * ab.y;
+        let d_beta = (w - x) * (1.0 - ab.x) + (z - y) * ab.x;
+        let det = d_alpha.perp_dot(d_beta);
+        if det == 0.0 || !det.is_finite() {
+            return None;
+        }
+        // Solve [d_alpha d_beta] · step = r by Cramer's rule (2×2).
+        let step = DVec2::new(r.perp_dot(d_beta) / det, d_alpha.perp_dot(r) / det);
+        ab -= step;
+        if step.abs().max_element() <= 1e-17 * ab.abs().max_element().max(1.0) {
+            return Some(ab);
+        }
+    }
+    let size = quad
+        .iter()
+        .map(|c| (*c - quad[0]).length())
+        .fold(0.0, f64::max);
+    ((bilinear_f64(quad, ab) - p).length() <= 1e-14 * size).then_some(ab)
 }
 
 fn show_q2(p: &[Q; 2]) -> String {
@@ -67,10 +114,10 @@ pub(crate) fn run() -> Result {
     )?;
     writeln!(
         out,
-        "The renderer does not exist yet; this demo runs the worked examples of S. R. Buss, 3D \
+        "This runs the worked examples of S. R. Buss, 3D \
          Computer Graphics (2003), ch. IV,\nnumbered as in A. Denisjuk's lecture notes \
          \"Interpolacja i teksturowanie\", through barytex-interp\nand checks every result \
-         against exact rational arithmetic (barytex_testkit::exact), computed now.\n"
+         against exact rational arithmetic, computed now.\n"
     )?;
     barycentric_examples(&mut out)?;
     bilinear_examples(&mut out)?;
@@ -78,8 +125,8 @@ pub(crate) fn run() -> Result {
     writeln!(
         out,
         "Full speed-vs-error report: docs/report/README.md and docs/report/interp.md.\n\
-         Produce it with `barytex report` (from the repository root: \
-         `cargo run --release -- report`; add `--quick` for a fast, rough run)."
+         Produce it with the workspace tool barytex-report (from the repository root: \
+         `cargo run --release -p barytex-report`; add `-- --quick` for a fast, rough run)."
     )?;
     Ok(())
 }
@@ -90,9 +137,7 @@ fn barycentric_examples(out: &mut impl Write) -> Result {
         [rat(2, 1), rat(3, 1)],
         [rat(3, 1), rat(1, 1)],
     ];
-    let tri = tri_q
-        .clone()
-        .map(|[x, y]| Vec2::new(to_f32(&x), to_f32(&y)));
+    let tri = tri_q.map(|[x, y]| Vec2::new(to_f32(x), to_f32(y)));
     let points = [(2, 1, 3, 1), (11, 3, 2, 1), (3, 2, 3, 2), (1, 1, 0, 1)];
     writeln!(
         out,
@@ -119,23 +164,19 @@ fn barycentric_examples(out: &mut impl Write) -> Result {
         "  {:<11} {:<18} {:<38} {:<14} {:<9} {:<9} {}",
         h[0], h[1], h[2], h[3], h[4], h[5], h[6]
     )?;
-    let total = cross(&tri_q[0], &tri_q[1], &tri_q[2]);
     for (xn, xd, yn, yd) in points {
         let ideal = [rat(xn, xd), rat(yn, yd)];
-        let ideal_weights = [
-            cross(&tri_q[1], &tri_q[2], &ideal) / &total,
-            cross(&tri_q[2], &tri_q[0], &ideal) / &total,
-            cross(&tri_q[0], &tri_q[1], &ideal) / &total,
-        ];
-        let p = Vec2::new(to_f32(&ideal[0]), to_f32(&ideal[1]));
+        let ideal_weights =
+            exact::barycentric(ideal, tri_q).ok_or("degenerate example triangle")?;
+        let p = Vec2::new(to_f32(ideal[0]), to_f32(ideal[1]));
         let b = barycentric_2d(p, tri)?;
         let exact_w = exact::barycentric_2d(p, tri).ok_or("degenerate example triangle")?;
         let (mut err, mut ulps, mut vs_ideal) = (0.0f64, 0.0f64, 0.0f64);
-        for ((&w, e), s) in b.weights.iter().zip(&exact_w).zip(&ideal_weights) {
-            let d = exact::abs_diff(&exact::qf(w), e);
+        for ((&w, &e), &s) in b.weights.iter().zip(&exact_w).zip(&ideal_weights) {
+            let d = exact::abs_diff(qf(w)?, e);
             err = err.max(d);
-            ulps = ulps.max(d / ulp_f32(exact::to_f64(e)));
-            vs_ideal = vs_ideal.max(exact::abs_diff(&exact::qf(w), s));
+            ulps = ulps.max(d / ulp_f32(e.to_f64()));
+            vs_ideal = vs_ideal.max(exact::abs_diff(qf(w)?, s));
         }
         let exact_location = exact::location_2d(p, tri);
         let location = if exact_location == b.location {
@@ -185,27 +226,15 @@ fn bilinear_examples(out: &mut impl Write) -> Result {
         "  {:<10} {:<22} {:<13} {:<9} {:<34} {:<9} {}",
         h[0], h[1], h[2], h[3], h[4], h[5], h[6]
     )?;
-    let one = rat(1, 1);
     for (an, ad, bn, bd) in params {
         let (alpha, beta) = (rat(an, ad), rat(bn, bd));
-        let weights = [
-            (&one - &alpha) * (&one - &beta),
-            &alpha * (&one - &beta),
-            &alpha * &beta,
-            (&one - &alpha) * &beta,
-        ];
-        let exact_point: [Q; 2] = std::array::from_fn(|i| {
-            weights
-                .iter()
-                .zip(&quad_q)
-                .map(|(w, c)| w * &c[i])
-                .fold(rat(0, 1), |acc, term| acc + term)
-        });
-        let (a32, b32) = (to_f32(&alpha), to_f32(&beta));
+        let exact_point = exact::bilinear(quad_q, alpha, beta);
+        let (a32, b32) = (to_f32(alpha), to_f32(beta));
         let p = bilinear(quad, a32, b32);
-        let exact_p = exact::bilinear_2d(quad, f64::from(a32), f64::from(b32));
-        let forward_err = exact::abs_diff(&exact::qf(p.x), &exact_p[0])
-            .max(exact::abs_diff(&exact::qf(p.y), &exact_p[1]));
+        // The exact map of the f32 parameters (what `bilinear` was given).
+        let exact_p = exact::bilinear(quad_q, qf(a32)?, qf(b32)?);
+        let forward_err =
+            exact::abs_diff(qf(p.x)?, exact_p[0]).max(exact::abs_diff(qf(p.y)?, exact_p[1]));
         let (kind, ab) = match inverse_bilinear_2d(p, quad)? {
             InverseBilinear::Inside(ab) => ("Inside", Some(ab)),
             InverseBilinear::Folded(ab, _) => ("Folded", Some(ab)),
@@ -219,13 +248,10 @@ fn bilinear_examples(out: &mut impl Write) -> Result {
         let (inverse, vs_given, vs_newton) = match ab {
             Some(ab) => (
                 format!("{kind} {}", show_f32s(&[ab.x, ab.y])),
-                show_err(
-                    exact::abs_diff(&exact::qf(ab.x), &alpha)
-                        .max(exact::abs_diff(&exact::qf(ab.y), &beta)),
-                ),
+                show_err(exact::abs_diff(qf(ab.x)?, alpha).max(exact::abs_diff(qf(ab.y)?, beta))),
                 newton.map_or_else(
                     || "–".to_owned(),
-                    |r| show_err(inverse_bilinear_error(ab, r)),
+                    |r| show_err((ab.as_dvec2() - r).abs().max_element()),
                 ),
             ),
             None => (kind.to_owned(), "–".to_owned(), "–".to_owned()),
@@ -284,4 +310,57 @@ fn kettner_summary(out: &mut impl Write) -> Result {
          naive gets {naive_b} and dop {dop_b} wrong)\n"
     )?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+
+    use super::*;
+    use barytex_testkit::seeded::{XorShift, convex_quad};
+
+    /// The local f64 references agree with barytex-testkit's, which the test suites use.
+    #[test]
+    fn references_match_the_testkit() {
+        let mut rng = XorShift::new(5);
+        for _ in 0..10_000 {
+            let x = f64::from(f32::from_bits(rng.next_u64() as u32));
+            let ours = ulp_f32(x);
+            let theirs = barytex_testkit::ulp::ulp_f32(x);
+            assert!(
+                ours == theirs || (ours.is_nan() && theirs.is_nan()),
+                "{x:e}"
+            );
+        }
+        for _ in 0..2_000 {
+            let quad = convex_quad(&mut rng).map(Vec2::as_dvec2);
+            let ab = DVec2::new(rng.f32_in(-0.5, 1.5).into(), rng.f32_in(-0.5, 1.5).into());
+            let p = bilinear_f64(quad, ab);
+            let start = ab + DVec2::splat(1e-3);
+            assert_eq!(
+                inverse_bilinear_newton(p, quad, start),
+                barytex_testkit::reference::inverse_bilinear_newton(p, quad, start)
+            );
+        }
+    }
+
+    /// The printed examples, as Buss states them: Example 9's point (1, 0) has the exact weights
+    /// (5/7, −1/7, 3/7), outside; (3/2, 3/2) has (5/14, 3/7, 3/14).
+    #[test]
+    fn exact_weights_of_the_worked_examples() {
+        let tri = [
+            [rat(0, 1), rat(0, 1)],
+            [rat(2, 1), rat(3, 1)],
+            [rat(3, 1), rat(1, 1)],
+        ];
+        let w = exact::barycentric([rat(1, 1), rat(0, 1)], tri).unwrap();
+        assert_eq!(show_q3(&w), "(5/7, -1/7, 3/7)");
+        let w = exact::barycentric([rat(3, 2), rat(3, 2)], tri).unwrap();
+        assert_eq!(show_q3(&w), "(5/14, 3/7, 3/14)");
+        let quad = [(0, 0), (4, 0), (5, 3), (0, 2)].map(|(x, y)| [rat(x, 1), rat(y, 1)]);
+        assert_eq!(
+            show_q2(&exact::bilinear(quad, rat(2, 3), rat(1, 3))),
+            "(26/9, 8/9)"
+        );
+    }
 }

@@ -7,17 +7,18 @@
 //!   [--filter …] [--aa …] [--threads N] [-o OUT.png] [--print-camera] [--stats]`: a glTF/GLB.
 //! - `barytex examples`: the worked examples of Buss, *3D Computer Graphics* (2003), ch. IV,
 //!   checked against exact arithmetic.
-//! - `barytex report [--out DIR] [--quick]`: the speed-vs-error report of the interpolation
-//!   methods, written as Markdown (`DIR/README.md`, `DIR/interp.md`; default `docs/report`).
 //! - `barytex uv-layout FILE [--scene N] [--size N] [-o DIR]`: the uv layout of every textured
 //!   primitive over its texture (default folder `<file stem>-uv-layout`).
 //! - `barytex uv-layout --mesh sphere|equal-area-sphere|torus|cylinder|cube|plane [--size N]
 //!   [-o FILE.png]`: a parametric mesh's uv layout (default `docs/uv-layout/<mesh>.png`).
+//!
+//! The speed-vs-error report (`docs/report/`) is the workspace tool `barytex-report`
+//! (`cargo run --release -p barytex-report`), not a subcommand: it measures against test
+//! references and peer crates the command does not carry. `barytex report` says so.
 
+mod exact;
 mod examples;
 mod render_cmd;
-mod report;
-mod timing;
 mod uv_layout;
 
 use std::path::PathBuf;
@@ -161,8 +162,13 @@ enum Command {
     /// Print the worked examples of Buss, 3D Computer Graphics (2003), ch. IV, checked against
     /// exact arithmetic.
     Examples,
-    /// Measure every method's speed and error on the same inputs and write the Markdown report.
-    Report(ReportArgs),
+    /// Moved to the workspace tool `barytex-report`; says how to run it.
+    #[command(hide = true, disable_help_flag = true)]
+    Report {
+        /// What was typed after `report`, passed on in the message.
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
+        args: Vec<String>,
+    },
     /// Draw uv layouts (wireframe, seams in red): a glTF file's textured primitives over their
     /// textures, or a parametric mesh's over a checker.
     UvLayout(UvLayoutArgs),
@@ -191,23 +197,18 @@ struct UvLayoutArgs {
     out: Option<PathBuf>,
 }
 
-/// Options of `barytex report`.
-#[derive(Debug, Args)]
-struct ReportArgs {
-    /// Directory for README.md and interp.md (created if missing).
-    #[arg(long, default_value = "docs/report")]
-    out: PathBuf,
-    /// Few inputs and short timing: a fast, rough run (for tests).
-    #[arg(long)]
-    quick: bool,
-}
-
-/// The command line as typed, with the program's path shortened to `barytex`.
-fn command_line() -> String {
-    std::iter::once("barytex".to_owned())
-        .chain(std::env::args().skip(1))
-        .collect::<Vec<_>>()
-        .join(" ")
+/// What `barytex report ARGS…` says: the report is the workspace tool `barytex-report` now,
+/// with the same options.
+fn report_moved(args: &[String]) -> String {
+    let passed = if args.is_empty() {
+        String::new()
+    } else {
+        format!(" -- {}", args.join(" "))
+    };
+    format!(
+        "the speed-vs-error report is the workspace tool barytex-report now; from the \
+         repository root run `cargo run --release -p barytex-report{passed}`"
+    )
 }
 
 /// Makes `barytex … | head` end quietly: `println!` panics when the reader has gone, and that
@@ -252,11 +253,7 @@ fn main() -> ExitCode {
             render_cmd::run(&args.render.options(Some(args.file), args.scene, args.out))
         }
         Some(Command::Examples) => examples::run(),
-        Some(Command::Report(args)) => report::run(&report::Options {
-            out: args.out,
-            quick: args.quick,
-            command: command_line(),
-        }),
+        Some(Command::Report { args }) => Err(report_moved(&args).into()),
         Some(Command::UvLayout(args)) => {
             // clap's `source` group already requires exactly one of the two.
             let source = match (args.file, args.mesh) {

@@ -1,5 +1,5 @@
-//! End-to-end tests of the `barytex` command: the demo scene, `render`, `examples`, `report
-//! --quick` and `uv-layout`.
+//! End-to-end tests of the `barytex` command: the demo scene, `render`, `examples` and
+//! `uv-layout`.
 #![allow(clippy::unwrap_used)]
 
 mod common;
@@ -26,81 +26,40 @@ fn examples_prints_the_worked_examples() {
     );
     assert!(stdout.contains("Example 10"), "{stdout}");
     assert!(stdout.contains("Kettner"), "{stdout}");
-    assert!(stdout.contains("barytex report"), "{stdout}");
+    assert!(
+        stdout.contains("cargo run --release -p barytex-report"),
+        "{stdout}"
+    );
 }
 
+/// The report is the workspace tool `barytex-report` now: `barytex report …` fails with one line
+/// saying how to run it, passing on what was typed, and stays out of the help.
 #[test]
-fn quick_report_writes_every_family() {
-    let dir = temp_dir("report");
+fn report_says_where_it_moved() {
     let output = barytex()
-        .args(["report", "--quick", "--out"])
-        .arg(&dir)
+        .args(["report", "--quick", "--out", "somewhere"])
         .output()
         .unwrap();
-    let stderr = String::from_utf8_lossy(&output.stderr);
-    assert!(
-        output.status.success(),
-        "exit status {:?}\n{stderr}",
-        output.status
+    assert_eq!(output.status.code(), Some(1));
+    assert!(output.stdout.is_empty());
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert_eq!(
+        stderr.trim_end(),
+        "barytex: the speed-vs-error report is the workspace tool barytex-report now; from the \
+         repository root run `cargo run --release -p barytex-report -- --quick --out somewhere`"
     );
-    let index = std::fs::read_to_string(dir.join("README.md")).unwrap();
-    let interp = std::fs::read_to_string(dir.join("interp.md")).unwrap();
-    assert!(index.contains("interp.md"), "{index}");
-    for heading in [
-        "## 2D barycentric",
-        "## 3D barycentric",
-        "## Orientation",
-        "## Inverse bilinear",
-        "## SLERP family",
-        "## 2D convex hull",
-        "## UV mappings",
-        "## UV distortion",
-    ] {
-        assert!(interp.contains(heading), "missing {heading:?}");
-    }
-    let texture = std::fs::read_to_string(dir.join("texture.md")).unwrap();
-    assert!(index.contains("texture.md"), "{index}");
-    for heading in [
-        "## Texture filters",
-        "### checkerboard plane at a grazing angle",
-        "### fine text",
-        "### rotated stripes",
-        "texture-filters-grazing.png",
-    ] {
-        assert!(texture.contains(heading), "missing {heading:?}");
-    }
-    let raster = std::fs::read_to_string(dir.join("raster.md")).unwrap();
-    assert!(index.contains("raster.md"), "{index}");
-    for heading in [
-        "## Rasterizer",
-        "### perspective interpolation",
-        "affine spans of 16 px",
-        "### anti-aliasing on a Siemens star",
-        "MSAA 4",
-        "adaptive",
-    ] {
-        assert!(raster.contains(heading), "missing {heading:?}");
-    }
-    let shading = std::fs::read_to_string(dir.join("shading.md")).unwrap();
-    assert!(index.contains("shading.md"), "{index}");
-    for heading in ["Gouraud", "H-test", "fast approximate Phong", "SLERP"] {
-        assert!(shading.contains(heading), "missing {heading:?}");
-    }
-    let strip = std::fs::read(dir.join("texture-filters-grazing.png")).unwrap();
-    assert!(strip.starts_with(b"\x89PNG"), "not a PNG");
-    // One progress line per family on stderr.
-    for family in [
-        "2D barycentric",
-        "3D barycentric",
-        "orientation",
-        "inverse bilinear",
-    ] {
-        assert!(
-            stderr.contains(family),
-            "no progress for {family}:\n{stderr}"
-        );
-    }
-    let _ = std::fs::remove_dir_all(&dir);
+    let bare = barytex().arg("report").output().unwrap();
+    assert!(
+        String::from_utf8_lossy(&bare.stderr)
+            .contains("run `cargo run --release -p barytex-report`"),
+        "{bare:?}"
+    );
+    let help = barytex().arg("--help").output().unwrap();
+    let help = String::from_utf8(help.stdout).unwrap();
+    assert!(
+        help.contains("uv-layout") && !help.contains("report"),
+        "{help}"
+    );
 }
 
 #[test]

@@ -1,5 +1,5 @@
 //! The named hard cases of this crate, in one place: run by the tests, the fuzz regressions and
-//! the speed-vs-error report (`barytex report`).
+//! the speed-vs-error report (`barytex-report`).
 //!
 //! Each case is plain data; the tests compute the exact answer from it with rational arithmetic,
 //! so a case never carries a hard-coded expected float.

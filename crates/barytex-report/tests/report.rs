@@ -1,13 +1,24 @@
-//! End-to-end test of `barytex report --quick`'s speed-vs-error charts: every chart is written,
-//! linked from its page and well-formed enough to be an SVG, and the progress bar stays off a
-//! stderr that is not a terminal.
+//! End-to-end tests of `barytex-report --quick`: every family's section and page is written,
+//! every speed-vs-error chart is written, linked from its page and well-formed enough to be an
+//! SVG, and the progress bar stays off a stderr that is not a terminal.
 #![allow(clippy::unwrap_used)]
 
-mod common;
-
-use common::{barytex, temp_dir};
 use std::collections::BTreeSet;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// The `barytex-report` binary under test.
+fn barytex_report() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_barytex-report"))
+}
+
+/// A fresh directory under the system's temporary directory, unique to this process and name.
+fn temp_dir(name: &str) -> PathBuf {
+    let dir =
+        std::env::temp_dir().join(format!("barytex-report-test-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
 
 /// The targets of the Markdown image links `![…](target)` of `page`.
 fn image_links(page: &str) -> Vec<String> {
@@ -29,10 +40,84 @@ fn read(dir: &Path, name: &str) -> String {
 }
 
 #[test]
+fn quick_report_writes_every_family() {
+    let dir = temp_dir("report");
+    let output = barytex_report()
+        .args(["--quick", "--out"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        output.status.success(),
+        "exit status {:?}\n{stderr}",
+        output.status
+    );
+    let index = std::fs::read_to_string(dir.join("README.md")).unwrap();
+    let interp = std::fs::read_to_string(dir.join("interp.md")).unwrap();
+    assert!(index.contains("interp.md"), "{index}");
+    for heading in [
+        "## 2D barycentric",
+        "## 3D barycentric",
+        "## Orientation",
+        "## Inverse bilinear",
+        "## SLERP family",
+        "## 2D convex hull",
+        "## UV mappings",
+        "## UV distortion",
+    ] {
+        assert!(interp.contains(heading), "missing {heading:?}");
+    }
+    let texture = std::fs::read_to_string(dir.join("texture.md")).unwrap();
+    assert!(index.contains("texture.md"), "{index}");
+    for heading in [
+        "## Texture filters",
+        "### checkerboard plane at a grazing angle",
+        "### fine text",
+        "### rotated stripes",
+        "texture-filters-grazing.png",
+    ] {
+        assert!(texture.contains(heading), "missing {heading:?}");
+    }
+    let raster = std::fs::read_to_string(dir.join("raster.md")).unwrap();
+    assert!(index.contains("raster.md"), "{index}");
+    for heading in [
+        "## Rasterizer",
+        "### perspective interpolation",
+        "affine spans of 16 px",
+        "### anti-aliasing on a Siemens star",
+        "MSAA 4",
+        "adaptive",
+    ] {
+        assert!(raster.contains(heading), "missing {heading:?}");
+    }
+    let shading = std::fs::read_to_string(dir.join("shading.md")).unwrap();
+    assert!(index.contains("shading.md"), "{index}");
+    for heading in ["Gouraud", "H-test", "fast approximate Phong", "SLERP"] {
+        assert!(shading.contains(heading), "missing {heading:?}");
+    }
+    let strip = std::fs::read(dir.join("texture-filters-grazing.png")).unwrap();
+    assert!(strip.starts_with(b"\x89PNG"), "not a PNG");
+    // One progress line per family on stderr.
+    for family in [
+        "2D barycentric",
+        "3D barycentric",
+        "orientation",
+        "inverse bilinear",
+    ] {
+        assert!(
+            stderr.contains(family),
+            "no progress for {family}:\n{stderr}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
 fn quick_report_writes_and_links_the_charts() {
     let dir = temp_dir("charts");
-    let output = barytex()
-        .args(["report", "--quick", "--out"])
+    let output = barytex_report()
+        .args(["--quick", "--out"])
         .arg(&dir)
         .output()
         .unwrap();
