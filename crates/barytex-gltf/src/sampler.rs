@@ -84,6 +84,14 @@ impl SamplerParams {
         !matches!(self.min_filter, MinFilter::Nearest | MinFilter::Linear)
     }
 
+    /// The LOD clamp that emulates a minification filter without mipmaps (`NEAREST`, `LINEAR`):
+    /// the Vulkan specification's recipe (§16.5 "Texel Filtering", the note on emulating OpenGL's
+    /// non-mipmapped minification: `maxLod = 0.25` with `mipmapMode = NEAREST`). A minified
+    /// lookup's λ is then 0.25 — positive, so the minification filter applies (OpenGL 4.6 §8.14)
+    /// — and the nearest mip of 0.25 is level 0; a magnified one keeps λ ≤ 0 and the
+    /// magnification filter. A clamp of 0 would make every lookup magnified.
+    pub const NO_MIPMAPS_MAX_LOD: f32 = 0.25;
+
     /// The equivalent `barytex_texture` sampler. Minification without mipmaps
     /// (`NEAREST`/`LINEAR`) samples only level 0, expressed as a LOD clamp of 0.
     ///
@@ -95,10 +103,12 @@ impl SamplerParams {
     /// let d = SamplerParams::default().to_descriptor();
     /// assert_eq!(d.address_mode_u, AddressMode::Repeat);
     /// assert_eq!((d.min_filter, d.mipmap_filter), (FilterMode::Linear, MipmapFilterMode::Linear));
-    /// // LINEAR minification without mipmaps pins the level of detail to 0.
+    /// // LINEAR minification without mipmaps: Vulkan's recipe, a LOD clamp of 0.25 with the
+    /// // nearest mip, so minified lookups take the min filter on level 0.
     /// let flat = SamplerParams { min_filter: MinFilter::Linear, wrap_t: Wrap::MirroredRepeat, ..SamplerParams::default() };
     /// let d = flat.to_descriptor();
-    /// assert_eq!((d.lod_min_clamp, d.lod_max_clamp), (0.0, 0.0));
+    /// assert_eq!((d.lod_min_clamp, d.lod_max_clamp), (0.0, SamplerParams::NO_MIPMAPS_MAX_LOD));
+    /// assert_eq!(d.mipmap_filter, MipmapFilterMode::Nearest);
     /// assert_eq!(d.address_mode_v, AddressMode::MirrorRepeat);
     /// ```
     #[must_use]
@@ -123,7 +133,11 @@ impl SamplerParams {
             mag_filter,
             min_filter,
             mipmap_filter,
-            lod_max_clamp: if mipmapped { 32.0 } else { 0.0 },
+            lod_max_clamp: if mipmapped {
+                32.0
+            } else {
+                Self::NO_MIPMAPS_MAX_LOD
+            },
             ..SamplerDescriptor::default()
         }
     }

@@ -95,7 +95,10 @@ impl Filter {
                         d.mipmap_filter = m;
                         d.lod_max_clamp = 32.0;
                     }
-                    None => d.lod_max_clamp = 0.0,
+                    None => {
+                        d.mipmap_filter = MipmapFilterMode::Nearest;
+                        d.lod_max_clamp = SamplerParams::NO_MIPMAPS_MAX_LOD;
+                    }
                 }
             };
         match self {
