@@ -32,6 +32,20 @@
 //! assert_eq!(scene.triangle_count(), 1);
 //! # Ok::<(), barytex_gltf::SceneError>(())
 //! ```
+//!
+//! # File access
+//!
+//! A glTF's relative URIs (RFC 3986 §4.2; percent-decoded per §2.1, so `%2e%2e/` is `../`) read
+//! only files under the model's folder, plus the folders in [`LoadOptions::allowed_roots`]. A
+//! path that leaves them lexically is refused without asking the file system (a missing and an
+//! existing outside file get the same error), and the canonical path (after symbolic links) is
+//! checked again; either refusal is [`SceneError::Denied`] at the URI's JSON pointer. Only
+//! regular files are read (not devices or FIFOs: the type is checked before opening and on the
+//! opened handle), and never more than the limit, whatever the metadata claims; [`load_path`]
+//! reads the model itself the same way. Absolute URLs (`http:`, `file:`) are never fetched. An
+//! embedder that keeps assets elsewhere serves URIs itself through a [`UriResolver`] and
+//! [`load_with_resolver`]. Error messages name objects by JSON pointer and elements by index,
+//! never by values read from a file.
 #![forbid(unsafe_code)]
 
 mod access;
