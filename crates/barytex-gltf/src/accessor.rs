@@ -632,13 +632,16 @@ impl Reader<'_> {
             if prev.is_some_and(|p| idx <= p) {
                 return Err(SceneError::invalid(
                     &ptr,
-                    format!("sparse indices must strictly increase (index {i} is {idx})"),
+                    format!("sparse index {i} does not exceed the one before it"),
                 ));
             }
             if u64::from(idx) >= acc.count {
                 return Err(SceneError::invalid(
                     &ptr,
-                    format!("sparse index {idx} ≥ accessor count {}", acc.count),
+                    format!(
+                        "sparse index {i} is not below the accessor count {}",
+                        acc.count
+                    ),
                 ));
             }
             prev = Some(idx);
@@ -696,7 +699,7 @@ impl Reader<'_> {
                 if !v.is_finite() {
                     return Err(SceneError::invalid(
                         &acc.ptr,
-                        format!("element {i} component {j} is {v}, not finite"),
+                        format!("element {i} component {j} is not finite"),
                     ));
                 }
                 let as_declared = |d: f64| {
@@ -712,7 +715,7 @@ impl Reader<'_> {
                 {
                     return Err(SceneError::invalid(
                         &acc.ptr,
-                        format!("element {i} component {j} is {v}, below the declared min {lo}"),
+                        format!("element {i} component {j} is below the declared min {lo}"),
                     ));
                 }
                 if let Some(&hi) = acc.max.as_ref().and_then(|m| m.get(j))
@@ -720,7 +723,7 @@ impl Reader<'_> {
                 {
                     return Err(SceneError::invalid(
                         &acc.ptr,
-                        format!("element {i} component {j} is {v}, above the declared max {hi}"),
+                        format!("element {i} component {j} is above the declared max {hi}"),
                     ));
                 }
             }

@@ -225,13 +225,13 @@ pub(crate) fn check_data(
             if t < 0.0 {
                 return Err(SceneError::invalid(
                     &acc.ptr,
-                    format!("keyframe {k} time {t} is negative"),
+                    format!("keyframe {k} time is negative"),
                 ));
             }
             if prev.is_some_and(|p| t <= p) {
                 return Err(SceneError::invalid(
                     &acc.ptr,
-                    format!("keyframe {k} time {t} does not increase"),
+                    format!("keyframe {k} time does not increase"),
                 ));
             }
             prev = Some(t);
@@ -249,7 +249,7 @@ pub(crate) fn check_data(
             if (len - 1.0).abs() > 1e-3 {
                 return Err(SceneError::invalid(
                     &acc.ptr,
-                    format!("rotation keyframe {k} has length {len}"),
+                    format!("rotation keyframe {k} is not a unit quaternion"),
                 ));
             }
         }

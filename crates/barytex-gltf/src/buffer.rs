@@ -2,10 +2,9 @@
 //! glTF), with the declared `byteLength` checked against limits before reading and against the
 //! data actually found after.
 
-use std::path::Path;
-
+use crate::access::{self, UriResolver};
 use crate::json::Obj;
-use crate::uri::{self, FileError, Uri};
+use crate::uri::{self, Uri};
 use crate::{SceneError, SceneLimits};
 
 /// A buffer as declared.
@@ -57,10 +56,11 @@ impl BufferDef {
 }
 
 /// Where a document came from, for resolving its buffers and images.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy)]
 pub(crate) struct Source<'a> {
-    /// The folder relative URIs resolve against; `None` for in-memory input.
-    pub(crate) base: Option<&'a Path>,
+    /// What serves relative URIs (the model's folder, or the embedder's resolver); `None` for
+    /// in-memory input.
+    pub(crate) files: Option<&'a dyn UriResolver>,
     /// The GLB BIN chunk, when the input was a GLB with one.
     pub(crate) bin: Option<&'a [u8]>,
     /// Whether the input was a GLB.
@@ -150,7 +150,7 @@ fn load_one(
             return Ok(None);
         }
         Some(Uri::Relative(rel)) => {
-            let Some(base) = source.base else {
+            let Some(files) = source.files else {
                 return Err(SceneError::invalid(
                     uri_ptr,
                     format!(
@@ -158,41 +158,32 @@ fn load_one(
                     ),
                 ));
             };
-            let path = uri::resolve(base, rel).map_err(|r| SceneError::invalid(&uri_ptr, r))?;
             if !used {
-                let meta = std::fs::metadata(&path).map_err(|source| SceneError::Io {
-                    path: path.display().to_string(),
-                    source,
-                })?;
-                if meta.len() < def.byte_length {
+                let len = access::size(
+                    files,
+                    &uri_ptr,
+                    rel,
+                    "buffer file bytes",
+                    limits.max_buffer_bytes,
+                )?;
+                if len < def.byte_length {
                     return Err(SceneError::invalid(
                         &def.ptr,
                         format!(
-                            "file holds {} bytes, byteLength declares {}",
-                            meta.len(),
+                            "file holds {len} bytes, byteLength declares {}",
                             def.byte_length
                         ),
                     ));
                 }
                 return Ok(None);
             }
-            match uri::read_file(&path, limits.max_buffer_bytes) {
-                Ok(bytes) => bytes,
-                Err(FileError::Io(source)) => {
-                    return Err(SceneError::Io {
-                        path: path.display().to_string(),
-                        source,
-                    });
-                }
-                Err(FileError::TooLarge(n)) => {
-                    return Err(SceneError::TooLarge {
-                        pointer: uri_ptr,
-                        what: "buffer file bytes",
-                        requested: n,
-                        limit: limits.max_buffer_bytes,
-                    });
-                }
-            }
+            access::fetch(
+                files,
+                &uri_ptr,
+                rel,
+                "buffer file bytes",
+                limits.max_buffer_bytes,
+            )?
         }
     };
     let declared = usize::try_from(def.byte_length).unwrap_or(usize::MAX);

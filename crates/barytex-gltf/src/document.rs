@@ -6,7 +6,6 @@
 //! is the specification's; decoding covers only what the chosen scene uses.
 
 use std::collections::BTreeSet;
-use std::path::Path;
 use std::sync::Arc;
 
 use barytex_texture::load::ColorSpace;
@@ -26,7 +25,7 @@ use crate::node::{NodeDef, NodeRefs, check_forest};
 use crate::sampler::SamplerParams;
 use crate::scene::{MeshInstance, Scene, SceneImage, SceneStats, Texture};
 use crate::skin::SkinDef;
-use crate::{LoadOptions, SceneError, glb};
+use crate::{LoadOptions, SceneError, UriResolver, glb};
 
 /// Extensions this loader implements (and so may appear in `extensionsRequired`).
 const SUPPORTED_EXTENSIONS: [&str; 4] = [
@@ -39,7 +38,7 @@ const SUPPORTED_EXTENSIONS: [&str; 4] = [
 /// Loads a glTF or GLB held in memory.
 pub(crate) fn load(
     bytes: &[u8],
-    base: Option<&Path>,
+    files: Option<&dyn UriResolver>,
     force_glb: bool,
     options: &LoadOptions,
 ) -> Result<Scene, SceneError> {
@@ -74,7 +73,7 @@ pub(crate) fn load(
     let root = as_obj(&root, "")
         .map_err(|_| SceneError::Json("the root is not a JSON object".to_owned()))?;
     crate::json::check_no_empty_arrays(root.value(), "", 0)?;
-    let source = Source { base, bin, is_glb };
+    let source = Source { files, bin, is_glb };
     Document::parse(root, source, options, &mut warnings)?.into_scene(source, options, warnings)
 }
 

@@ -9,10 +9,19 @@ use core::fmt;
 pub enum SceneError {
     /// A file could not be read (the glTF itself, an external buffer or an image).
     Io {
-        /// The path that failed.
+        /// The path that failed: the glTF's path as given, or a URI's decoded path.
         path: String,
         /// The operating system's reason.
         source: std::io::Error,
+    },
+    /// A URI names a file this load may not read: one outside the model's folder and the
+    /// allowed roots ([`LoadOptions::allowed_roots`](crate::LoadOptions::allowed_roots)), one a
+    /// [`UriResolver`](crate::UriResolver) refused, or one that is not a regular file.
+    Denied {
+        /// JSON pointer to the URI, e.g. `/buffers/0/uri`.
+        pointer: String,
+        /// The URI's decoded path and why it was refused.
+        reason: String,
     },
     /// The JSON could not be parsed, or did not have the glTF schema's shape.
     Json(String),
@@ -79,6 +88,7 @@ impl SceneError {
         match self {
             Self::Invalid { pointer, .. }
             | Self::TooLarge { pointer, .. }
+            | Self::Denied { pointer, .. }
             | Self::Image { pointer, .. } => Some(pointer),
             _ => None,
         }
@@ -89,6 +99,7 @@ impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::Io { path, source } => write!(f, "cannot read {path}: {source}"),
+            Self::Denied { pointer, reason } => write!(f, "{pointer}: {reason}"),
             Self::Json(msg) => write!(f, "invalid glTF JSON: {msg}"),
             Self::Glb(msg) => write!(f, "invalid GLB container: {msg}"),
             Self::Invalid { pointer, reason } => write!(f, "{pointer}: {reason}"),

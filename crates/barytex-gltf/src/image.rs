@@ -6,10 +6,11 @@ use std::borrow::Cow;
 
 use barytex_texture::load::{AnyTexture2d, ColorSpace};
 
+use crate::access;
 use crate::accessor::{Reader, ViewDef};
 use crate::buffer::Source;
 use crate::json::Obj;
-use crate::uri::{self, FileError, Uri};
+use crate::uri::{self, Uri};
 use crate::{SceneError, SceneLimits};
 
 /// Where an image's bytes are.
@@ -113,26 +114,20 @@ impl ImageDef {
             ImageSource::Uri(Uri::Data { bytes, .. }) => Ok(Some(Cow::Owned(bytes.clone()))),
             ImageSource::Uri(Uri::NonRelative(_)) => Ok(None),
             ImageSource::Uri(Uri::Relative(rel)) => {
-                let base = source.base.ok_or_else(|| {
+                let files = source.files.ok_or_else(|| {
                     SceneError::invalid(
                         &uri_ptr,
                         format!("external image {rel:?} cannot be resolved for in-memory input"),
                     )
                 })?;
-                let path = uri::resolve(base, rel).map_err(|r| SceneError::invalid(&uri_ptr, r))?;
-                match uri::read_file(&path, limits.max_image_file_bytes) {
-                    Ok(b) => Ok(Some(Cow::Owned(b))),
-                    Err(FileError::Io(e)) => Err(SceneError::Io {
-                        path: path.display().to_string(),
-                        source: e,
-                    }),
-                    Err(FileError::TooLarge(n)) => Err(SceneError::TooLarge {
-                        pointer: uri_ptr,
-                        what: "image file bytes",
-                        requested: n,
-                        limit: limits.max_image_file_bytes,
-                    }),
-                }
+                let bytes = access::fetch(
+                    files,
+                    &uri_ptr,
+                    rel,
+                    "image file bytes",
+                    limits.max_image_file_bytes,
+                )?;
+                Ok(Some(Cow::Owned(bytes)))
             }
         }
     }

@@ -32,8 +32,23 @@
 //! assert_eq!(scene.triangle_count(), 1);
 //! # Ok::<(), barytex_gltf::SceneError>(())
 //! ```
+//!
+//! # File access
+//!
+//! A glTF's relative URIs (RFC 3986 §4.2; percent-decoded per §2.1, so `%2e%2e/` is `../`) read
+//! only files under the model's folder, plus the folders in [`LoadOptions::allowed_roots`]. A
+//! path that leaves them lexically is refused without asking the file system (a missing and an
+//! existing outside file get the same error), and the canonical path (after symbolic links) is
+//! checked again; either refusal is [`SceneError::Denied`] at the URI's JSON pointer. Only
+//! regular files are read (not devices or FIFOs: the type is checked before opening and on the
+//! opened handle), and never more than the limit, whatever the metadata claims; [`load_path`]
+//! reads the model itself the same way. Absolute URLs (`http:`, `file:`) are never fetched. An
+//! embedder that keeps assets elsewhere serves URIs itself through a [`UriResolver`] and
+//! [`load_with_resolver`]. Error messages name objects by JSON pointer and elements by index,
+//! never by values read from a file.
 #![forbid(unsafe_code)]
 
+mod access;
 mod accessor;
 mod animation;
 mod buffer;
@@ -56,8 +71,9 @@ pub mod topology;
 mod uri;
 mod variants;
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
+pub use access::{ResolveError, UriResolver};
 pub use camera::{Projection, SceneCamera};
 pub use error::SceneError;
 pub use light::{LightKind, PunctualLight, SceneLight};
@@ -83,7 +99,7 @@ pub use topology::Topology;
 /// assert_eq!((first.stats.nodes_visited, first.scene_count), (1, 2));
 /// # Ok::<(), SceneError>(())
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct LoadOptions {
     /// Size limits for untrusted input.
     pub limits: SceneLimits,
@@ -92,6 +108,10 @@ pub struct LoadOptions {
     /// Whether to decode the images the scene's materials sample (their bytes are checked
     /// either way).
     pub decode_images: bool,
+    /// Folders besides the model's own that its relative URIs may reach (e.g. a shared
+    /// textures folder beside the model's). Empty by default: a document reads only files under
+    /// its own folder. A root that does not exist allows nothing.
+    pub allowed_roots: Vec<PathBuf>,
 }
 
 impl Default for LoadOptions {
@@ -100,6 +120,7 @@ impl Default for LoadOptions {
             limits: SceneLimits::default(),
             scene: None,
             decode_images: true,
+            allowed_roots: Vec::new(),
         }
     }
 }
@@ -140,10 +161,12 @@ pub fn load_slice(bytes: &[u8], options: &LoadOptions) -> Result<Scene, SceneErr
     guarded(|| document::load(bytes, None, false, options))
 }
 
-/// Loads a glTF or GLB held in memory whose relative URIs resolve against `base_dir`.
+/// Loads a glTF or GLB held in memory whose relative URIs resolve against `base_dir`, confined
+/// to it and to [`LoadOptions::allowed_roots`] (see the crate's file-access policy).
 ///
 /// # Errors
-/// As [`load_slice`], plus [`SceneError::Io`] for a missing external file.
+/// As [`load_slice`], plus [`SceneError::Io`] for a missing external file and
+/// [`SceneError::Denied`] for one outside the allowed folders or not a regular file.
 ///
 /// ```
 /// use barytex_gltf::{LoadOptions, SceneError, load_slice_with_base};
@@ -173,11 +196,31 @@ pub fn load_slice_with_base(
     base_dir: &Path,
     options: &LoadOptions,
 ) -> Result<Scene, SceneError> {
-    guarded(|| document::load(bytes, Some(base_dir), false, options))
+    let files = access::FolderResolver {
+        base: base_dir,
+        extra: &options.allowed_roots,
+    };
+    guarded(|| document::load(bytes, Some(&files), false, options))
+}
+
+/// Loads a glTF or GLB held in memory whose relative URIs `resolver` serves (see
+/// [`UriResolver`], with an example). [`LoadOptions::allowed_roots`] is not used: the resolver
+/// alone decides what a document may read.
+///
+/// # Errors
+/// As [`load_slice`], plus [`SceneError::Denied`], [`SceneError::Io`] or
+/// [`SceneError::TooLarge`] for a file the resolver refused or could not read.
+pub fn load_with_resolver(
+    bytes: &[u8],
+    resolver: &dyn UriResolver,
+    options: &LoadOptions,
+) -> Result<Scene, SceneError> {
+    guarded(|| document::load(bytes, Some(resolver), false, options))
 }
 
 /// Loads a `.gltf` or `.glb` file (a `.glb` extension, or the GLB magic, selects the binary
-/// container); relative URIs resolve against the file's folder.
+/// container); relative URIs resolve against the file's folder, confined to it and to
+/// [`LoadOptions::allowed_roots`]. The file must be a regular file (not a device or a FIFO).
 ///
 /// # Errors
 /// As [`load_slice_with_base`].
@@ -213,20 +256,27 @@ pub fn load_path(path: impl AsRef<Path>, options: &LoadOptions) -> Result<Scene,
             path: path.display().to_string(),
             source,
         };
-        let len = std::fs::metadata(path).map_err(io)?.len();
-        if len > options.limits.max_file_bytes {
-            return Err(SceneError::TooLarge {
+        let limit = options.limits.max_file_bytes;
+        let bytes = access::read_regular_file(path, limit).map_err(|e| match e {
+            access::ResolveError::TooLarge(requested) => SceneError::TooLarge {
                 pointer: String::new(),
                 what: "file bytes",
-                requested: len,
-                limit: options.limits.max_file_bytes,
-            });
-        }
-        let bytes = std::fs::read(path).map_err(io)?;
+                requested,
+                limit,
+            },
+            access::ResolveError::Io(source) => io(source),
+            other => io(std::io::Error::new(
+                std::io::ErrorKind::InvalidInput,
+                other.to_string(),
+            )),
+        })?;
         let is_glb = path
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("glb"));
-        let base = path.parent().unwrap_or_else(|| Path::new("."));
-        document::load(&bytes, Some(base), is_glb, options)
+        let files = access::FolderResolver {
+            base: path.parent().unwrap_or_else(|| Path::new(".")),
+            extra: &options.allowed_roots,
+        };
+        document::load(&bytes, Some(&files), is_glb, options)
     })
 }

@@ -474,7 +474,7 @@ impl PrimitiveDef {
                     if u64::from(v) >= n {
                         return Err(SceneError::invalid(
                             format!("{}/indices", self.ptr),
-                            format!("index {k} is {v}, beyond the {n} vertices"),
+                            format!("index {k} is beyond the {n} vertices"),
                         ));
                     }
                 }
@@ -500,16 +500,25 @@ impl PrimitiveDef {
             if !(name.starts_with("COLOR_") && float) {
                 continue;
             }
-            let values: Vec<f32> = match acc.layout.map(|l| l.element) {
-                Some(ElementType::Vec3) => {
-                    reader.read_f32::<3>(acc)?.into_iter().flatten().collect()
-                }
-                _ => reader.read_f32::<4>(acc)?.into_iter().flatten().collect(),
+            let (values, n): (Vec<f32>, usize) = match acc.layout.map(|l| l.element) {
+                Some(ElementType::Vec3) => (
+                    reader.read_f32::<3>(acc)?.into_iter().flatten().collect(),
+                    3,
+                ),
+                _ => (
+                    reader.read_f32::<4>(acc)?.into_iter().flatten().collect(),
+                    4,
+                ),
             };
-            if let Some(v) = values.iter().find(|v| !(0.0..=1.0).contains(*v)) {
+            // Named by position, never by value: the bytes may come from an external file.
+            if let Some(at) = values.iter().position(|v| !(0.0..=1.0).contains(v)) {
                 return Err(SceneError::invalid(
                     &acc.ptr,
-                    format!("colour component {v} outside [0, 1]"),
+                    format!(
+                        "colour element {} component {} is outside [0, 1]",
+                        at / n,
+                        at % n
+                    ),
                 ));
             }
         }
@@ -525,7 +534,7 @@ impl PrimitiveDef {
             if t[3] != 1.0 && t[3] != -1.0 {
                 return Err(SceneError::invalid(
                     &acc.ptr,
-                    format!("tangent {k} has w = {}, not ±1", t[3]),
+                    format!("tangent {k} has a w that is not ±1"),
                 ));
             }
         }

@@ -1,8 +1,6 @@
 //! URIs inside a glTF: `data:` URIs (base64 payload, media type checked) and relative file
-//! references (percent-decoded, resolved against the glTF's folder, never escaping to another
-//! scheme). Absolute URLs are refused: a loader of untrusted files must not fetch from the network.
-
-use std::path::{Path, PathBuf};
+//! references (percent-decoded; `access` decides which files they may reach). Absolute URLs are
+//! refused: a loader of untrusted files must not fetch from the network.
 
 use base64::Engine as _;
 
@@ -89,34 +87,6 @@ pub(crate) fn parse(uri: &str, max_bytes: u64) -> Result<Uri, String> {
         return Err(format!("URI {uri:?} names no file"));
     }
     Ok(Uri::Relative(decoded.into_owned()))
-}
-
-/// Resolves a decoded relative reference against the glTF's folder. `..` is allowed (assets
-/// commonly share a textures folder), but absolute paths are refused.
-pub(crate) fn resolve(base: &Path, relative: &str) -> Result<PathBuf, String> {
-    let rel = Path::new(relative);
-    if rel.is_absolute() || relative.starts_with('/') || relative.starts_with('\\') {
-        return Err(format!("absolute path {relative:?} in a relative URI"));
-    }
-    Ok(base.join(rel))
-}
-
-/// Reads a file of at most `max_bytes`, checking its size before reading it.
-pub(crate) fn read_file(path: &Path, max_bytes: u64) -> Result<Vec<u8>, FileError> {
-    let meta = std::fs::metadata(path).map_err(FileError::Io)?;
-    if meta.len() > max_bytes {
-        return Err(FileError::TooLarge(meta.len()));
-    }
-    std::fs::read(path).map_err(FileError::Io)
-}
-
-/// Why [`read_file`] failed.
-#[derive(Debug)]
-pub(crate) enum FileError {
-    /// The OS refused.
-    Io(std::io::Error),
-    /// The file is larger than allowed (its size).
-    TooLarge(u64),
 }
 
 #[cfg(test)]

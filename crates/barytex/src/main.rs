@@ -4,11 +4,12 @@
 //!   `barytex-demo.png` and prints where it went and how long each stage took (`barytex demo`
 //!   takes the render options).
 //! - `barytex render FILE [--scene N] [--camera N|auto] [--size WxH] [--shading unlit|phong]
-//!   [--filter …] [--aa …] [--threads N] [-o OUT.png] [--print-camera] [--stats]`: a glTF/GLB.
+//!   [--filter …] [--aa …] [--threads N] [-o OUT.png] [--print-camera] [--stats]
+//!   [--allow-dir DIR]…`: a glTF/GLB (its URIs read only files under its folder and each DIR).
 //! - `barytex examples`: the worked examples of Buss, *3D Computer Graphics* (2003), ch. IV,
 //!   checked against exact arithmetic.
-//! - `barytex uv-layout FILE [--scene N] [--size N] [-o DIR]`: the uv layout of every textured
-//!   primitive over its texture (default folder `<file stem>-uv-layout`).
+//! - `barytex uv-layout FILE [--scene N] [--size N] [-o DIR] [--allow-dir DIR]…`: the uv layout
+//!   of every textured primitive over its texture (default folder `<file stem>-uv-layout`).
 //! - `barytex uv-layout --mesh sphere|equal-area-sphere|torus|cylinder|cube|plane [--size N]
 //!   [-o FILE.png]`: a parametric mesh's uv layout (default `docs/uv-layout/<mesh>.png`).
 //!
@@ -84,6 +85,10 @@ struct RenderFileArgs {
     /// The PNG to write.
     #[arg(short, long, default_value = "barytex-render.png")]
     out: PathBuf,
+    /// A folder besides the model's own that its relative URIs may read (repeatable); by
+    /// default a model reads only files under its own folder.
+    #[arg(long = "allow-dir", value_name = "DIR")]
+    allow_dir: Vec<PathBuf>,
     #[command(flatten)]
     render: RenderArgs,
 }
@@ -120,12 +125,14 @@ impl RenderArgs {
         self,
         file: Option<PathBuf>,
         scene: Option<usize>,
+        allowed_roots: Vec<PathBuf>,
         out: PathBuf,
     ) -> render_cmd::Options {
         let background = barytex_render::RenderOptions::default().background;
         render_cmd::Options {
             file,
             scene,
+            allowed_roots,
             render: barytex_render::RenderOptions {
                 width: self.size.0,
                 height: self.size.1,
@@ -185,6 +192,10 @@ struct UvLayoutArgs {
     /// Which of the file's scenes (default: its `scene`, else the first).
     #[arg(long, requires = "file")]
     scene: Option<usize>,
+    /// A folder besides the model's own that its relative URIs may read (repeatable); by
+    /// default a model reads only files under its own folder.
+    #[arg(long = "allow-dir", value_name = "DIR", requires = "file")]
+    allow_dir: Vec<PathBuf>,
     /// A built-in parametric mesh instead of a file.
     #[arg(long, value_enum)]
     mesh: Option<uv_layout::MeshKind>,
@@ -237,6 +248,7 @@ fn main() -> ExitCode {
         None => render_cmd::run(&RenderArgs::demo_defaults().options(
             None,
             None,
+            Vec::new(),
             PathBuf::from("barytex-demo.png"),
         )),
         Some(Command::Demo(args)) => {
@@ -247,11 +259,14 @@ fn main() -> ExitCode {
                 fog: args.render.fog.or(defaults.fog),
                 ..args.render
             };
-            render_cmd::run(&render.options(None, None, args.out))
+            render_cmd::run(&render.options(None, None, Vec::new(), args.out))
         }
-        Some(Command::Render(args)) => {
-            render_cmd::run(&args.render.options(Some(args.file), args.scene, args.out))
-        }
+        Some(Command::Render(args)) => render_cmd::run(&args.render.options(
+            Some(args.file),
+            args.scene,
+            args.allow_dir,
+            args.out,
+        )),
         Some(Command::Examples) => examples::run(),
         Some(Command::Report { args }) => Err(report_moved(&args).into()),
         Some(Command::UvLayout(args)) => {
@@ -260,6 +275,7 @@ fn main() -> ExitCode {
                 (Some(path), None) => Ok(uv_layout::Source::File {
                     path,
                     scene: args.scene,
+                    allowed_roots: args.allow_dir,
                 }),
                 (None, Some(kind)) => Ok(uv_layout::Source::Mesh(kind)),
                 _ => Err("uv-layout takes a FILE or --mesh, not both".into()),

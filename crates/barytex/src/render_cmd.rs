@@ -17,6 +17,8 @@ pub(crate) struct Options {
     pub(crate) file: Option<PathBuf>,
     /// Which of the file's scenes.
     pub(crate) scene: Option<usize>,
+    /// Folders besides the file's own that its URIs may read (`--allow-dir`).
+    pub(crate) allowed_roots: Vec<PathBuf>,
     /// The render settings.
     pub(crate) render: RenderOptions,
     /// Worker threads (`None`: all cores).
@@ -149,6 +151,7 @@ fn load(options: &Options) -> Result<(Scene, f64), Box<dyn std::error::Error>> {
             path,
             &LoadOptions {
                 scene: options.scene,
+                allowed_roots: options.allowed_roots.clone(),
                 ..LoadOptions::default()
             },
         )

@@ -73,6 +73,8 @@ pub(crate) enum Source {
         path: PathBuf,
         /// Which of its scenes.
         scene: Option<usize>,
+        /// Folders besides the file's own that its URIs may read (`--allow-dir`).
+        allowed_roots: Vec<PathBuf>,
     },
 }
 
@@ -80,9 +82,17 @@ pub(crate) enum Source {
 pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     match &options.source {
         Source::Mesh(kind) => run_mesh(*kind, options.size, options.out.clone()),
-        Source::File { path, scene } => {
-            scene::run_file(path, *scene, options.size, options.out.clone())
-        }
+        Source::File {
+            path,
+            scene,
+            allowed_roots,
+        } => scene::run_file(
+            path,
+            *scene,
+            allowed_roots,
+            options.size,
+            options.out.clone(),
+        ),
     }
 }
 

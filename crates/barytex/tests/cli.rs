@@ -460,3 +460,75 @@ fn uv_layout_refuses_sizes_above_8192() {
     assert!(!out.exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A triangle in `DIR/model/triangle.gltf` whose positions are in `DIR/shared/triangle.bin`,
+/// outside the model's folder: `render` and `uv-layout` refuse the buffer, naming its URI,
+/// unless `--allow-dir DIR/shared` opens that folder.
+#[test]
+fn allow_dir_opens_a_folder_beside_the_model() {
+    let dir = temp_dir("allow-dir");
+    std::fs::create_dir_all(dir.join("model")).unwrap();
+    std::fs::create_dir_all(dir.join("shared")).unwrap();
+    let positions: Vec<u8> = [0.0_f32, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]
+        .iter()
+        .flat_map(|v| v.to_le_bytes())
+        .collect();
+    std::fs::write(dir.join("shared/triangle.bin"), positions).unwrap();
+    let gltf = dir.join("model/triangle.gltf");
+    std::fs::write(
+        &gltf,
+        r#"{"asset":{"version":"2.0"},
+            "buffers":[{"byteLength":36,"uri":"../shared/triangle.bin"}],
+            "bufferViews":[{"buffer":0,"byteLength":36}],
+            "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}],
+            "meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
+            "nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]}"#,
+    )
+    .unwrap();
+    let out = dir.join("out.png");
+    let shared = dir.join("shared");
+    let os = std::ffi::OsStr::new;
+    let render = [
+        os("render"),
+        gltf.as_os_str(),
+        os("--size"),
+        os("16x12"),
+        os("-o"),
+        out.as_os_str(),
+    ];
+    let line = refused(&render, "/buffers/0/uri");
+    assert!(line.contains("outside"), "{line}");
+    let output = barytex()
+        .args(render)
+        .args([os("--allow-dir"), shared.as_os_str()])
+        .output()
+        .unwrap();
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    assert!(out.is_file());
+
+    let layout = [os("uv-layout"), gltf.as_os_str(), os("-o"), dir.as_os_str()];
+    refused(&layout, "/buffers/0/uri");
+    // Loaded with the folder allowed: the triangle has no uvs, which is the next complaint.
+    let with = [layout.as_slice(), &[os("--allow-dir"), shared.as_os_str()]].concat();
+    refused(&with, "texture coordinates");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `barytex render /dev/zero` (0 bytes by its metadata, endless when read) is refused at once as
+/// not a regular file, under a 1 GiB address-space limit that reading it would blow.
+#[cfg(target_os = "linux")]
+#[test]
+fn render_refuses_a_device() {
+    let script = format!(
+        "ulimit -v 1048576 && exec timeout 60 '{}' render /dev/zero --size 16x16 -o /dev/null",
+        env!("CARGO_BIN_EXE_barytex"),
+    );
+    let output = Command::new("bash").args(["-c", &script]).output().unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("not a regular file"), "{stderr}");
+}

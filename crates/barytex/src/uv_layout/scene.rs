@@ -136,6 +136,7 @@ fn uv_range(uvs: &[Vec2]) -> Option<(Vec2, Vec2)> {
 pub(crate) fn run_file(
     file: &Path,
     scene: Option<usize>,
+    allowed_roots: &[PathBuf],
     size: u32,
     out: Option<PathBuf>,
 ) -> Result<(), Box<dyn std::error::Error>> {
@@ -143,6 +144,7 @@ pub(crate) fn run_file(
         file,
         &LoadOptions {
             scene,
+            allowed_roots: allowed_roots.to_vec(),
             ..LoadOptions::default()
         },
     )
