@@ -490,6 +490,21 @@ impl Document {
             }
         };
 
+        // What one placement of each mesh costs, from declared counts: (triangles, vertices).
+        let mesh_cost: Vec<(u64, u64)> = self
+            .meshes
+            .iter()
+            .map(|m| {
+                m.primitives.iter().fold((0u64, 0u64), |(t, v), p| {
+                    (
+                        t.saturating_add(p.claimed_triangles(&self.accessors)),
+                        v.saturating_add(p.claimed_vertices()),
+                    )
+                })
+            })
+            .collect();
+        let (mut instanced_triangles, mut instanced_vertices) = (0u64, 0u64);
+
         // Walk the forest (already checked acyclic and within the depth limit).
         let mut placed_meshes: Vec<(usize, usize, Mat4)> = Vec::new();
         let mut cameras = Vec::new();
@@ -512,6 +527,30 @@ impl Document {
                         limit: limits.max_instances as u64,
                     });
                 }
+                let (triangles, vertices) = mesh_cost.get(m).copied().unwrap_or_default();
+                instanced_triangles = instanced_triangles.saturating_add(triangles);
+                instanced_vertices = instanced_vertices.saturating_add(vertices);
+                for (what, requested, limit) in [
+                    (
+                        "instanced triangles",
+                        instanced_triangles,
+                        limits.max_instanced_triangles,
+                    ),
+                    (
+                        "instanced vertices",
+                        instanced_vertices,
+                        limits.max_instanced_vertices,
+                    ),
+                ] {
+                    if requested > limit {
+                        return Err(SceneError::TooLarge {
+                            pointer: format!("/nodes/{n}"),
+                            what,
+                            requested,
+                            limit,
+                        });
+                    }
+                }
                 placed_meshes.push((n, m, world));
             }
             if let Some(c) = node.camera
@@ -528,6 +567,14 @@ impl Document {
             if let Some(l) = node.light
                 && let Some(Some(light)) = self.lights.get(l)
             {
+                if lights.len() >= limits.max_lights {
+                    return Err(SceneError::TooLarge {
+                        pointer: format!("/nodes/{n}"),
+                        what: "lights",
+                        requested: lights.len() as u64 + 1,
+                        limit: limits.max_lights as u64,
+                    });
+                }
                 let direction = world.transform_vector3(Vec3::NEG_Z).normalize_or_zero();
                 lights.push(SceneLight {
                     node: n,
