@@ -160,10 +160,21 @@ impl Layout {
         }
     }
 
-    /// Bytes one element occupies.
+    /// Bytes one element occupies, padding included: the distance between tightly packed
+    /// elements.
     pub(crate) fn element_size(self) -> u64 {
         let (cols, _) = self.element.shape();
         cols * self.column_stride()
+    }
+
+    /// Bytes an element's data reaches: [`element_size`](Self::element_size) without the last
+    /// column's trailing padding. The padding only separates a column from what follows it
+    /// (glTF 2.0 §3.6.2.4), so the last element of a bufferView may end here; the
+    /// glTF-Validator's element length is the same (6 for MAT2 of 1-byte components, 11 and 22
+    /// for MAT3 of 1- and 2-byte ones).
+    pub(crate) fn element_bytes(self) -> u64 {
+        let (cols, rows) = self.element.shape();
+        (cols - 1) * self.column_stride() + rows * self.component.size()
     }
 
     /// Byte offset of component `j` (column-major) inside an element.
@@ -409,7 +420,8 @@ impl AccessorDef {
                 ));
             }
             let stride = v.stride.unwrap_or(element_size);
-            check_range(obj.ptr, "accessor", v, offset, stride, count, element_size)?;
+            let bytes = layout.element_bytes();
+            check_range(obj.ptr, "accessor", v, offset, stride, count, bytes)?;
         }
         let sparse = match obj.opt_obj("sparse")? {
             None => None,
@@ -540,7 +552,7 @@ fn parse_sparse(
             values_offset,
             es,
             sparse_count,
-            es,
+            layout.element_bytes(),
         )?;
     }
     Ok(SparseDef {
@@ -596,9 +608,10 @@ impl Reader<'_> {
             return Ok(());
         };
         let bytes = self.view_bytes(view, &acc.ptr)?;
-        let es = layout.element_size();
-        let stride = self.views.get(view).and_then(|v| v.stride).unwrap_or(es);
-        let (es, stride, offset) = (to_usize(es)?, to_usize(stride)?, to_usize(acc.offset)?);
+        let stride = self.views.get(view).and_then(|v| v.stride);
+        let stride = stride.unwrap_or(layout.element_size());
+        let es = to_usize(layout.element_bytes())?;
+        let (stride, offset) = (to_usize(stride)?, to_usize(acc.offset)?);
         for i in 0..to_usize(acc.count)? {
             let start = i
                 .checked_mul(stride)
@@ -664,11 +677,12 @@ impl Reader<'_> {
         let ptr = format!("{}/sparse/values", acc.ptr);
         let bytes = self.view_bytes(s.values_view, &ptr)?;
         let es = to_usize(layout.element_size())?;
+        let real = to_usize(layout.element_bytes())?;
         let offset = to_usize(s.values_offset)?;
         for (i, &target) in indices.iter().enumerate() {
             let at = i.checked_mul(es).and_then(|x| x.checked_add(offset));
             let el = at
-                .and_then(|at| slice_at(bytes, at, es))
+                .and_then(|at| slice_at(bytes, at, real))
                 .ok_or_else(|| SceneError::invalid(&ptr, "sparse value outside its bufferView"))?;
             f(target, el)?;
         }
@@ -853,5 +867,19 @@ mod tests {
             element: ElementType::Mat3,
         };
         assert_eq!(mat3_i16.element_size(), 24);
+        // The last element ends at its last real byte (the validator's element lengths).
+        assert_eq!(mat3_u8.element_bytes(), 11);
+        assert_eq!(mat3_i16.element_bytes(), 22);
+        let mat2_u8 = Layout {
+            component: ComponentType::U8,
+            element: ElementType::Mat2,
+        };
+        assert_eq!((mat2_u8.element_size(), mat2_u8.element_bytes()), (8, 6));
+        assert_eq!(mat2_i16.element_bytes(), 8);
+        let vec3_u8 = Layout {
+            component: ComponentType::U8,
+            element: ElementType::Vec3,
+        };
+        assert_eq!((vec3_u8.element_size(), vec3_u8.element_bytes()), (3, 3));
     }
 }

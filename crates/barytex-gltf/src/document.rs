@@ -5,10 +5,10 @@
 //! Validation covers the whole document, used or not, wherever the check is cheap and the rule
 //! is the specification's; decoding covers only what the chosen scene uses.
 
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 use std::sync::Arc;
 
-use barytex_texture::load::ColorSpace;
+use barytex_texture::load::{AnyTexture2d, ColorSpace};
 use glam::{Mat4, Vec3};
 use serde_json::Value;
 
@@ -16,7 +16,7 @@ use crate::accessor::{AccessorDef, Reader, ViewDef};
 use crate::animation::{AnimationContext, KeyframeChecks};
 use crate::buffer::{self, BufferDef, Source};
 use crate::camera::{Projection, SceneCamera};
-use crate::image::ImageDef;
+use crate::image::{ImageDef, ImageSource};
 use crate::json::{Obj, as_obj, child};
 use crate::light::{PunctualLight, SceneLight};
 use crate::material::Material;
@@ -25,6 +25,7 @@ use crate::node::{NodeDef, NodeRefs, check_forest};
 use crate::sampler::SamplerParams;
 use crate::scene::{MeshInstance, Scene, SceneImage, SceneStats, Texture};
 use crate::skin::SkinDef;
+use crate::uri::Uri;
 use crate::{LoadOptions, SceneError, UriResolver, glb};
 
 /// Extensions this loader implements (and so may appear in `extensionsRequired`).
@@ -75,6 +76,24 @@ pub(crate) fn load(
     crate::json::check_no_empty_arrays(root.value(), "", 0)?;
     let source = Source { files, bin, is_glb };
     Document::parse(root, source, options, &mut warnings)?.into_scene(source, options, warnings)
+}
+
+/// Where an image's encoded bytes come from, to decode each source once.
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+enum ImageKey<'a> {
+    View(usize),
+    Data(&'a [u8]),
+    /// A relative URI (its text: two spellings of one file are two sources) or an unfetched
+    /// absolute one.
+    Uri(&'a str),
+}
+
+fn image_key(def: &ImageDef) -> ImageKey<'_> {
+    match &def.source {
+        ImageSource::View(v) => ImageKey::View(*v),
+        ImageSource::Uri(Uri::Data { bytes, .. }) => ImageKey::Data(bytes),
+        ImageSource::Uri(Uri::Relative(u) | Uri::NonRelative(u)) => ImageKey::Uri(u),
+    }
 }
 
 /// Every object of the document, parsed and cross-checked.
@@ -489,6 +508,21 @@ impl Document {
             }
         };
 
+        // What one placement of each mesh costs, from declared counts: (triangles, vertices).
+        let mesh_cost: Vec<(u64, u64)> = self
+            .meshes
+            .iter()
+            .map(|m| {
+                m.primitives.iter().fold((0u64, 0u64), |(t, v), p| {
+                    (
+                        t.saturating_add(p.claimed_triangles(&self.accessors)),
+                        v.saturating_add(p.claimed_vertices()),
+                    )
+                })
+            })
+            .collect();
+        let (mut instanced_triangles, mut instanced_vertices) = (0u64, 0u64);
+
         // Walk the forest (already checked acyclic and within the depth limit).
         let mut placed_meshes: Vec<(usize, usize, Mat4)> = Vec::new();
         let mut cameras = Vec::new();
@@ -511,6 +545,30 @@ impl Document {
                         limit: limits.max_instances as u64,
                     });
                 }
+                let (triangles, vertices) = mesh_cost.get(m).copied().unwrap_or_default();
+                instanced_triangles = instanced_triangles.saturating_add(triangles);
+                instanced_vertices = instanced_vertices.saturating_add(vertices);
+                for (what, requested, limit) in [
+                    (
+                        "instanced triangles",
+                        instanced_triangles,
+                        limits.max_instanced_triangles,
+                    ),
+                    (
+                        "instanced vertices",
+                        instanced_vertices,
+                        limits.max_instanced_vertices,
+                    ),
+                ] {
+                    if requested > limit {
+                        return Err(SceneError::TooLarge {
+                            pointer: format!("/nodes/{n}"),
+                            what,
+                            requested,
+                            limit,
+                        });
+                    }
+                }
                 placed_meshes.push((n, m, world));
             }
             if let Some(c) = node.camera
@@ -527,6 +585,14 @@ impl Document {
             if let Some(l) = node.light
                 && let Some(Some(light)) = self.lights.get(l)
             {
+                if lights.len() >= limits.max_lights {
+                    return Err(SceneError::TooLarge {
+                        pointer: format!("/nodes/{n}"),
+                        what: "lights",
+                        requested: lights.len() as u64 + 1,
+                        limit: limits.max_lights as u64,
+                    });
+                }
                 let direction = world.transform_vector3(Vec3::NEG_Z).normalize_or_zero();
                 lights.push(SceneLight {
                     node: n,
@@ -634,6 +700,10 @@ impl Document {
             }
         }
         let mut images = Vec::with_capacity(self.images.len());
+        // Decoded textures by (source, sRGB?): entries sharing a source share its texture, and
+        // only distinct decodes count against `max_total_image_bytes`.
+        let mut decoded_images: BTreeMap<(ImageKey<'_>, bool), Arc<AnyTexture2d>> = BTreeMap::new();
+        let mut image_bytes = 0u64;
         for (i, def) in self.images.iter().enumerate() {
             let mut slot = SceneImage {
                 name: def.name.clone(),
@@ -656,13 +726,47 @@ impl Document {
             }
             if options.decode_images {
                 let decoding = std::time::Instant::now();
-                if wants_srgb {
-                    slot.srgb = Some(Arc::new(def.decode(&bytes, ColorSpace::Srgb, limits)?));
-                    stats.images_decoded += 1;
-                }
-                if wants_linear {
-                    slot.linear = Some(Arc::new(def.decode(&bytes, ColorSpace::Linear, limits)?));
-                    stats.images_decoded += 1;
+                for (wants, space) in [
+                    (wants_srgb, ColorSpace::Srgb),
+                    (wants_linear, ColorSpace::Linear),
+                ] {
+                    if !wants {
+                        continue;
+                    }
+                    let key = (image_key(def), space == ColorSpace::Srgb);
+                    let texture = match decoded_images.get(&key) {
+                        Some(shared) => Arc::clone(shared),
+                        None => {
+                            // From the header, before anything is decoded: this image's
+                            // own limits (as `decode` checks them), then the budget.
+                            let image_error =
+                                |e: barytex_texture::TextureError| SceneError::Image {
+                                    pointer: def.ptr.clone(),
+                                    reason: e.to_string(),
+                                };
+                            let (width, height, need) =
+                                barytex_texture::load::decoded_size(&bytes, space)
+                                    .map_err(image_error)?;
+                            limits.image.check(width, height, 16).map_err(image_error)?;
+                            image_bytes = image_bytes.saturating_add(need);
+                            if image_bytes > limits.max_total_image_bytes {
+                                return Err(SceneError::TooLarge {
+                                    pointer: def.ptr.clone(),
+                                    what: "total decoded image bytes",
+                                    requested: image_bytes,
+                                    limit: limits.max_total_image_bytes,
+                                });
+                            }
+                            let texture = Arc::new(def.decode(&bytes, space, limits)?);
+                            stats.images_decoded += 1;
+                            decoded_images.insert(key, Arc::clone(&texture));
+                            texture
+                        }
+                    };
+                    match space {
+                        ColorSpace::Srgb => slot.srgb = Some(texture),
+                        ColorSpace::Linear => slot.linear = Some(texture),
+                    }
                 }
                 decode_seconds += decoding.elapsed().as_secs_f64();
             }

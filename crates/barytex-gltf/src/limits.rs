@@ -33,8 +33,22 @@ pub struct SceneLimits {
     pub max_image_file_bytes: u64,
     /// Image side and decoded-size limits, passed to `barytex_texture::load_from_memory`.
     pub image: barytex_texture::Limits,
-    /// Most triangles over all decoded primitives.
+    /// Most decoded bytes of all images together, as stored (4 bytes a texel for 8-bit colour,
+    /// 1 for an 8-bit greyscale data map, 8 for 16-bit, 16 for float images). Each distinct
+    /// source (a file, a `bufferView`, a data URI) counts once per colour space it is decoded
+    /// in, and image entries sharing a source share its texture. Checked from each image's
+    /// header before it is decoded.
+    pub max_total_image_bytes: u64,
+    /// Most triangles over all decoded primitives (each mesh counted once).
     pub max_triangles: u64,
+    /// Most triangles over all mesh instances: a mesh counts once for every node placing it,
+    /// since a renderer transforms and rasterizes every instance. Checked from the declared
+    /// counts while the node hierarchy is walked, before any mesh is decoded.
+    pub max_instanced_triangles: u64,
+    /// Most vertices over all mesh instances (the `POSITION` count of every triangle primitive,
+    /// once per node placing its mesh): a renderer copies every instance's vertices into world
+    /// space. Checked with [`max_instanced_triangles`](Self::max_instanced_triangles).
+    pub max_instanced_vertices: u64,
     /// Most elements in one accessor.
     pub max_accessor_elements: u64,
     /// Most elements in an accessor without a bufferView (all zeros, or zeros under sparse
@@ -47,11 +61,18 @@ pub struct SceneLimits {
     pub max_nodes: usize,
     /// Most mesh instances (node–mesh pairs) in the flattened scene.
     pub max_instances: usize,
+    /// Most lights (node–light pairs of `KHR_lights_punctual`) in the flattened scene: every
+    /// light is evaluated at every shaded sample, so their number multiplies the render's
+    /// cost. Refused, not culled: which lights matter depends on the view, which the loader
+    /// does not know.
+    pub max_lights: usize,
 }
 
 impl Default for SceneLimits {
-    /// Generous for real assets (a 2 GiB GLB, 50 M triangles), small enough that a forged file
-    /// cannot exhaust a workstation.
+    /// Generous for real assets (a 2 GiB GLB, 50 M triangles, 2 GiB of decoded images, 1024
+    /// lights), small enough that a forged file cannot exhaust a workstation. Instanced
+    /// vertices are three per instanced triangle, so a non-indexed scene at the triangle limit
+    /// fits; the vertex limit bites on meshes with many more vertices than triangles.
     fn default() -> Self {
         Self {
             max_file_bytes: 2 << 30,
@@ -59,12 +80,16 @@ impl Default for SceneLimits {
             max_total_buffer_bytes: 4 << 30,
             max_image_file_bytes: 512 << 20,
             image: barytex_texture::Limits::default(),
+            max_total_image_bytes: 2 << 30,
             max_triangles: 50_000_000,
+            max_instanced_triangles: 50_000_000,
+            max_instanced_vertices: 150_000_000,
             max_accessor_elements: 100_000_000,
             max_unbacked_accessor_elements: 1 << 20,
             max_node_depth: 64,
             max_nodes: 1_000_000,
             max_instances: 1_000_000,
+            max_lights: 1024,
         }
     }
 }

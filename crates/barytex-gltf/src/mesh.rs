@@ -647,4 +647,15 @@ impl PrimitiveDef {
         };
         t.triangle_count(usize::try_from(n).unwrap_or(usize::MAX)) as u64
     }
+
+    /// Vertices a decoded triangle primitive holds (its attributes' count; 0 where
+    /// [`claimed_triangles`](Self::claimed_triangles) skips the primitive), from declared counts.
+    pub(crate) fn claimed_vertices(&self) -> u64 {
+        if !self.topology.is_some_and(|t| t.is_triangles())
+            || !self.attributes.contains_key("POSITION")
+        {
+            return 0;
+        }
+        self.vertex_count.unwrap_or(0)
+    }
 }

@@ -97,7 +97,8 @@ pub struct SceneStats {
     pub triangles: usize,
     /// Triangles over all instances.
     pub instanced_triangles: usize,
-    /// Image decodes performed (an image used as colour and as data counts twice).
+    /// Image decodes performed (an image used as colour and as data counts twice; image entries
+    /// sharing a source share one decode).
     pub images_decoded: usize,
     /// Images no material of the chosen scene samples (checked, not decoded).
     pub images_skipped: usize,

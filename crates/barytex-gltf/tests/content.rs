@@ -276,3 +276,61 @@ fn strips_keep_their_orientation() {
     }
     assert_eq!(p.triangles.len(), 2);
 }
+
+/// glTF 2.0 §3.6.2.4 "Data Alignment": a matrix column whose `rows × component size` is not a
+/// multiple of 4 (MAT2 of 1-byte, MAT3 of 1- or 2-byte components) is padded to a 4-byte
+/// boundary. The padding separates columns and elements; the last element of an accessor needs
+/// only its real bytes, so a bufferView may end right after the last column's data (the
+/// glTF-Validator's element length: 6 for MAT2 u8, 11 for MAT3 u8, 22 for MAT3 u16).
+#[test]
+fn padded_matrix_accessors_end_at_their_last_real_byte() {
+    // Two elements each: MAT2 i8 in 8 + 6 = 14 bytes, MAT3 u8 in 12 + 11 = 23 bytes,
+    // MAT3 u16 in 24 + 22 = 46 bytes (the views start at 4-byte-aligned offsets 0, 16, 40).
+    let mut data = vec![0u8; 86];
+    data[0] = 1; // element 0, column 0, row 0 of the MAT2
+    data[12] = 0xFE; // element 1, column 1, row 0 of the MAT2: -2
+    data[16 + 12 + 8 + 2] = 9; // MAT3 u8: element 1, column 2, row 2 (the view's last byte)
+    data[40 + 24 + 16 + 4] = 7; // MAT3 u16: element 1, column 2, row 2 (the view's last two)
+    let gltf = format!(
+        r#"{{"asset":{{"version":"2.0"}},
+            "buffers":[{{"byteLength":86,"uri":"data:application/octet-stream;base64,{}"}}],
+            "bufferViews":[{{"buffer":0,"byteLength":14}},
+                           {{"buffer":0,"byteOffset":16,"byteLength":23}},
+                           {{"buffer":0,"byteOffset":40,"byteLength":46}}],
+            "accessors":[{{"bufferView":0,"componentType":5120,"count":2,"type":"MAT2",
+                           "min":[0,0,-2,0],"max":[1,0,0,0]}},
+                         {{"bufferView":1,"componentType":5121,"count":2,"type":"MAT3",
+                           "min":[0,0,0,0,0,0,0,0,0],"max":[0,0,0,0,0,0,0,0,9]}},
+                         {{"bufferView":2,"componentType":5123,"count":2,"type":"MAT3",
+                           "min":[0,0,0,0,0,0,0,0,0],"max":[0,0,0,0,0,0,0,0,7]}}]}}"#,
+        base64::engine::general_purpose::STANDARD.encode(&data)
+    );
+    let r = load_slice(gltf.as_bytes(), &LoadOptions::default());
+    assert!(r.is_ok(), "{r:?}");
+    // One byte less than the real bytes is still refused, naming the accessor.
+    for (view, len) in [(0, 14), (1, 23), (2, 46)] {
+        let short = gltf.replacen(
+            &format!(r#""byteLength":{len}}}"#),
+            &format!(r#""byteLength":{}}}"#, len - 1),
+            1,
+        );
+        assert_ne!(short, gltf);
+        let r = load_slice(short.as_bytes(), &LoadOptions::default());
+        assert!(
+            matches!(&r, Err(barytex_gltf::SceneError::Invalid { pointer, .. })
+                if *pointer == format!("/accessors/{view}")),
+            "view {view} at {} bytes: {r:?}",
+            len - 1
+        );
+    }
+    // The validator's own test asset for these elements loads too (when the fixtures exist).
+    if let Some(root) = common::fixtures() {
+        let p = root.join(
+            "gltf-invalid/glTF-Validator/test/base/data/accessor_data/get_elements_matrix.gltf",
+        );
+        if p.exists() {
+            let r = load_path(&p, &LoadOptions::default());
+            assert!(r.is_ok(), "{r:?}");
+        }
+    }
+}

@@ -94,6 +94,15 @@ pub enum RenderError {
     /// The target could not be made: an invalid sample count, a size over the limits, a failed
     /// allocation.
     Raster(RasterError),
+    /// The scene's world-space geometry could not be allocated (every mesh instance is copied
+    /// into world space; the loader's `SceneLimits` bound how much a file can ask for, a
+    /// hand-built scene is bounded by nothing but memory).
+    OutOfMemory {
+        /// What was being allocated.
+        what: &'static str,
+        /// How many elements were asked for.
+        count: usize,
+    },
 }
 
 impl fmt::Display for RenderError {
@@ -106,6 +115,9 @@ impl fmt::Display for RenderError {
             Self::InvalidOption(why) => write!(f, "invalid render option: {why}"),
             Self::Texture(e) => write!(f, "{e}"),
             Self::Raster(e) => write!(f, "{e}"),
+            Self::OutOfMemory { what, count } => {
+                write!(f, "out of memory allocating {count} {what}")
+            }
         }
     }
 }

@@ -109,34 +109,58 @@ fn world_items<'a>(
     let size = Vec2::new(width as f32, height as f32);
     let lit = options.shading != Shading::Unlit;
 
-    // Geometry in world space, with what texture preparation needs to know about it.
-    let mut items: Vec<DrawItem<'_>> = Vec::new();
+    // Geometry in world space, with what texture preparation needs to know about it. Every
+    // instance gets its own copy, allocated fallibly: a scene may place a mesh many times.
+    let item_count = scene
+        .instances
+        .iter()
+        .fold(0usize, |n, i| n.saturating_add(i.mesh.primitives.len()));
+    let mut items: Vec<DrawItem<'_>> = try_collect("primitive instances", item_count, [])?;
     for instance in &scene.instances {
         let normal_matrix = Mat3::from_mat4(instance.world).inverse().transpose();
         for primitive in &instance.mesh.primitives {
-            let positions: Vec<Vec3> = primitive
-                .positions
-                .iter()
-                .map(|&p| instance.world.transform_point3(p))
-                .collect();
-            let normals = primitive.normals.as_ref().map(|n| {
-                n.iter()
-                    .map(|&v| (normal_matrix * v).normalize_or_zero())
-                    .collect()
-            });
-            let clip: Vec<Vec4> = positions
-                .iter()
-                .map(|p| view_projection * p.extend(1.0))
-                .collect();
+            let vertex_count = primitive.positions.len();
+            let positions: Vec<Vec3> = try_collect(
+                "world-space positions",
+                vertex_count,
+                primitive
+                    .positions
+                    .iter()
+                    .map(|&p| instance.world.transform_point3(p)),
+            )?;
+            let normals = match primitive.normals.as_ref() {
+                Some(n) => Some(try_collect(
+                    "world-space normals",
+                    n.len(),
+                    n.iter().map(|&v| (normal_matrix * v).normalize_or_zero()),
+                )?),
+                None => None,
+            };
+            let clip: Vec<Vec4> = try_collect(
+                "clip-space positions",
+                vertex_count,
+                positions.iter().map(|p| view_projection * p.extend(1.0)),
+            )?;
+            let index_count = primitive.triangles.len().saturating_mul(3);
+            let indices = try_collect(
+                "triangle indices",
+                index_count,
+                primitive.triangles.iter().flatten().copied(),
+            )?;
+            let vertex_ids = try_collect(
+                "vertex indices",
+                vertex_count,
+                0..u32::try_from(vertex_count).unwrap_or(u32::MAX),
+            )?;
             let uv0 = primitive.tex_coords0.as_deref();
             let uv1 = primitive.tex_coords1.as_deref();
             let material = scene.material(primitive.material);
             let centre = positions.iter().copied().sum::<Vec3>() / positions.len().max(1) as f32;
             items.push(DrawItem {
                 uv_per_pixel: uv_per_pixel(&clip, [uv0, uv1], &primitive.triangles, size),
-                indices: primitive.triangles.iter().flatten().copied().collect(),
+                indices,
                 phong_indices: Vec::new(),
-                vertices: (0..positions.len() as u32).collect(),
+                vertices: vertex_ids,
                 primitive: WorldPrimitive {
                     positions,
                     normals,
@@ -169,6 +193,20 @@ fn world_items<'a>(
         }
     }
     Ok((camera, items))
+}
+
+/// Collects `items` (`len` of them) into a vector allocated fallibly: a refused allocation is
+/// [`RenderError::OutOfMemory`] naming `what`, not an abort.
+fn try_collect<T>(
+    what: &'static str,
+    len: usize,
+    items: impl IntoIterator<Item = T>,
+) -> Result<Vec<T>, RenderError> {
+    let mut out = Vec::new();
+    out.try_reserve_exact(len)
+        .map_err(|_| RenderError::OutOfMemory { what, count: len })?;
+    out.extend(items);
+    Ok(out)
 }
 
 /// Prepares the textures the items' materials sample (only those; mips only where minified),
@@ -458,4 +496,36 @@ fn flatten(item: &mut DrawItem<'_>, lights: &[Light], eye: Vec3) {
     };
     item.indices = (0..count).collect();
     item.vertices = (0..count).collect();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn world_copies_that_cannot_be_allocated_are_errors() {
+        // 2⁵⁶ positions are 864 PB: the allocator refuses (a `collect` would abort the
+        // process); a count whose bytes overflow is refused as well (a `collect` would panic).
+        for count in [1usize << 56, usize::MAX] {
+            let r = try_collect::<Vec3>("world-space positions", count, std::iter::empty());
+            assert_eq!(
+                r.err(),
+                Some(RenderError::OutOfMemory {
+                    what: "world-space positions",
+                    count
+                })
+            );
+        }
+        let error = RenderError::OutOfMemory {
+            what: "triangle indices",
+            count: 7,
+        };
+        assert_eq!(
+            error.to_string(),
+            "out of memory allocating 7 triangle indices"
+        );
+        // What fits is collected as given.
+        let r = try_collect("vertex indices", 3, 0..3u32);
+        assert_eq!(r.ok(), Some(vec![0, 1, 2]));
+    }
 }

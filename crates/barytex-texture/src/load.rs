@@ -151,6 +151,39 @@ pub fn load_from_memory(
     convert(image, color_space)
 }
 
+/// `(width, height, bytes)` of the texture [`load_from_memory`] returns for `bytes`, read from
+/// the image's header without decoding a pixel; `bytes` is `width × height ×` the texel size
+/// of the format it is decoded into (1 byte for 8-bit greyscale as linear data, 4 for other
+/// 8-bit images, 8 for 16-bit ones, 16 for float ones). Temporary buffers while decoding are
+/// not counted, and no [`Limits`] are checked.
+///
+/// # Errors
+/// [`TextureError::Decode`] for an unknown format or an unreadable header.
+pub fn decoded_size(
+    bytes: &[u8],
+    color_space: ColorSpace,
+) -> Result<(u32, u32, u64), TextureError> {
+    use image::{ColorType, ImageDecoder as _};
+    let decode_error = |e: image::ImageError| TextureError::Decode(e.to_string());
+    let decoder = ImageReader::new(Cursor::new(bytes))
+        .with_guessed_format()
+        .map_err(|e| TextureError::Decode(e.to_string()))?
+        .into_decoder()
+        .map_err(decode_error)?;
+    let (width, height) = decoder.dimensions();
+    // The texel size of each arm of `convert`.
+    let texel: u64 = match decoder.color_type() {
+        ColorType::L8 if color_space == ColorSpace::Linear => 1,
+        ColorType::L8 | ColorType::La8 | ColorType::Rgb8 | ColorType::Rgba8 => 4,
+        ColorType::Rgb32F | ColorType::Rgba32F => 16,
+        _ => 8,
+    };
+    let bytes = u64::from(width)
+        .saturating_mul(u64::from(height))
+        .saturating_mul(texel);
+    Ok((width, height, bytes))
+}
+
 /// Decodes a PNG or JPEG file; see [`load_from_memory`].
 ///
 /// # Errors

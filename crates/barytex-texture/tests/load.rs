@@ -1,7 +1,7 @@
 //! Loading through the `image` crate: round trips, formats, and limits enforced before decoding.
 #![cfg(feature = "image")]
 
-use barytex_texture::load::{AnyTexture2d, ColorSpace, encode_png, load_from_memory};
+use barytex_texture::load::{AnyTexture2d, ColorSpace, decoded_size, encode_png, load_from_memory};
 use barytex_texture::{Limits, Srgba8, Texture2d, TextureError};
 
 /// CRC-32 (IEEE), for hand-made PNG chunks.
@@ -136,4 +136,59 @@ fn fixture_textures_load() {
         }
     }
     assert!(loaded > 0, "no image in {}", dir.display());
+}
+
+/// The bytes a loaded texture holds: its texel count times its format's texel size.
+fn held_bytes(t: &AnyTexture2d) -> u64 {
+    let (w, h) = t.size();
+    let texel = match t {
+        AnyTexture2d::R8(_) => 1,
+        AnyTexture2d::Srgba8(_) | AnyTexture2d::Rgba8(_) => 4,
+        AnyTexture2d::Rgba16f(_) => 8,
+        AnyTexture2d::Rgba32f(_) => 16,
+        _ => panic!("unknown format"),
+    };
+    u64::from(w) * u64::from(h) * texel
+}
+
+#[test]
+fn decoded_size_predicts_the_loaded_size_from_the_header() {
+    fn encode<P: image::PixelWithColorType>(
+        image: &image::ImageBuffer<P, Vec<P::Subpixel>>,
+    ) -> Vec<u8>
+    where
+        [P::Subpixel]: image::EncodableLayout,
+    {
+        let mut png = Vec::new();
+        image
+            .write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+            .expect("encode");
+        png
+    }
+    let grey = encode(&image::GrayImage::from_pixel(5, 3, image::Luma([7])));
+    let rgb = encode(&image::RgbImage::from_pixel(5, 3, image::Rgb([1, 2, 3])));
+    let rgba16 = encode(&image::ImageBuffer::<image::Rgba<u16>, _>::from_pixel(
+        5,
+        3,
+        image::Rgba([1, 2, 3, 4]),
+    ));
+    for (png, srgb, linear) in [(&grey, 60, 15), (&rgb, 60, 60), (&rgba16, 120, 120)] {
+        for (space, expected) in [(ColorSpace::Srgb, srgb), (ColorSpace::Linear, linear)] {
+            let predicted = decoded_size(png, space).expect("header");
+            let loaded = load_from_memory(png, space, &Limits::default()).expect("decode");
+            assert_eq!(
+                (predicted, held_bytes(&loaded)),
+                ((5, 3, expected), expected)
+            );
+        }
+    }
+    // From the header alone: a 100 000² claim with no real data is 40 GB, nothing decoded.
+    assert_eq!(
+        decoded_size(&lying_png(100_000, 100_000), ColorSpace::Srgb).expect("header"),
+        (100_000, 100_000, 40_000_000_000)
+    );
+    assert!(matches!(
+        decoded_size(b"not an image", ColorSpace::Srgb),
+        Err(TextureError::Decode(_))
+    ));
 }

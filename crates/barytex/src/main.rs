@@ -62,8 +62,9 @@ struct RenderArgs {
     /// adaptive:N (up to N samples where needed).
     #[arg(long, value_parser = render_cmd::parse_aa)]
     aa: Option<barytex_render::AntiAliasing>,
-    /// Worker threads (absent or 0: all cores); the image is the same for any count.
-    #[arg(long)]
+    /// Worker threads, at most 1024 (absent or 0: all cores); the image is the same for any
+    /// count.
+    #[arg(long, value_parser = render_cmd::parse_threads)]
     threads: Option<usize>,
     /// Print the view and projection matrices.
     #[arg(long)]

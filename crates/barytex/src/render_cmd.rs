@@ -46,6 +46,22 @@ pub(crate) fn parse_size(text: &str) -> Result<(u32, u32), String> {
     Ok((side(w)?, side(h)?))
 }
 
+/// The most worker threads `--threads` accepts: far more than any machine has cores, far
+/// fewer than the thousands at which spawning fails ("Resource temporarily unavailable").
+pub(crate) const MAX_THREADS: usize = 1024;
+
+/// `0` (all cores) to [`MAX_THREADS`].
+pub(crate) fn parse_threads(text: &str) -> Result<usize, String> {
+    let too_many = || format!("threads `{text}`: at most {MAX_THREADS} (0: all cores)");
+    let n: u128 = text.trim().parse().map_err(|_| {
+        format!("threads `{text}`: expected a number of threads, 0 to {MAX_THREADS}")
+    })?;
+    usize::try_from(n)
+        .ok()
+        .filter(|&n| n <= MAX_THREADS)
+        .ok_or_else(too_many)
+}
+
 /// `auto` or a camera index.
 pub(crate) fn parse_camera(text: &str) -> Result<CameraChoice, String> {
     if text == "auto" {
@@ -354,6 +370,21 @@ fn save(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn threads_parse_up_to_the_maximum() {
+        assert_eq!(parse_threads("0"), Ok(0));
+        assert_eq!(parse_threads("7"), Ok(7));
+        assert_eq!(parse_threads("1024"), Ok(MAX_THREADS));
+        for bad in ["1025", "2000", "18446744073709551616", "-1", "x", ""] {
+            assert!(parse_threads(bad).is_err(), "{bad:?}");
+        }
+        let message = parse_threads("2000").err().unwrap_or_default();
+        assert!(
+            message.contains("2000") && message.contains("1024"),
+            "{message}"
+        );
+    }
 
     #[test]
     fn sizes_parse_and_refuse() {

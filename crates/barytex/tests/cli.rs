@@ -532,3 +532,34 @@ fn render_refuses_a_device() {
     assert_eq!(output.status.code(), Some(1), "{stderr}");
     assert!(stderr.contains("not a regular file"), "{stderr}");
 }
+
+/// `--threads` above 1024 is refused while parsing, before a thread is spawned: thousands of
+/// threads only fail slowly ("Resource temporarily unavailable") and never help.
+#[test]
+fn render_refuses_more_than_1024_threads() {
+    let dir = temp_dir("threads-max");
+    std::fs::create_dir_all(&dir).unwrap();
+    let gltf = dir.join("triangle.gltf");
+    std::fs::write(&gltf, triangle_gltf()).unwrap();
+    let out = dir.join("out.png");
+    for threads in ["1025", "100000", "18446744073709551615"] {
+        let started = std::time::Instant::now();
+        let output = barytex()
+            .arg("render")
+            .arg(&gltf)
+            .args(["--size", "8x6", "--threads", threads, "-o"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(!output.status.success(), "--threads {threads}: {output:?}");
+        assert!(!stderr.contains("panicked"), "{stderr}");
+        assert!(
+            stderr.contains(threads) && stderr.contains("1024"),
+            "the message should name the value and the maximum: {stderr}"
+        );
+        assert!(!out.exists(), "--threads {threads} wrote an image");
+        assert!(started.elapsed().as_secs() < 10, "{:?}", started.elapsed());
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -29,6 +29,10 @@ pub fn fuzz_limits() -> SceneLimits {
         max_triangles: 20_000,
         max_accessor_elements: 100_000,
         max_unbacked_accessor_elements: 100_000,
+        max_instanced_triangles: 100_000,
+        max_instanced_vertices: 300_000,
+        max_total_image_bytes: 4 << 20,
+        max_lights: 64,
         ..SceneLimits::default()
     }
 }
