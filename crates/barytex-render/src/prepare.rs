@@ -14,7 +14,7 @@ use glam::{Mat3, Vec2, Vec3, Vec4};
 
 use crate::lights::{highlight_context, light_terms, shininess, world_lights};
 use crate::material_shader::{ShaderMaterial, WorldPrimitive};
-use crate::textures::{PreparedTexture, Textures};
+use crate::textures::{AlphaUse, PreparedTexture, Textures};
 use crate::{
     CameraChoice, RenderCamera, RenderError, RenderOptions, Shading, auto_camera, scene_camera,
 };
@@ -252,18 +252,28 @@ fn prepare_textures(
     let mut slots = Vec::with_capacity(items.len());
     for material in &item_materials {
         let m = scene.material(*material);
-        let mut slot = |r: &Option<TextureRef>, space| -> Result<_, TextureError> {
+        let mut slot = |r: &Option<TextureRef>, space, alpha| -> Result<_, TextureError> {
             match r {
-                Some(r) => textures.slot(scene, r, space, options.filter, &minification),
+                Some(r) => textures.slot(scene, r, space, alpha, options.filter, &minification),
                 None => Ok(None),
             }
         };
-        let base = slot(&m.base_color_texture, ColorSpace::Srgb)?;
+        // OPAQUE ignores the base colour's alpha; no material reads the others' alpha.
+        let base_alpha = if m.alpha_mode == AlphaMode::Opaque {
+            AlphaUse::Ignored
+        } else {
+            AlphaUse::Coverage
+        };
+        let base = slot(&m.base_color_texture, ColorSpace::Srgb, base_alpha)?;
         let (emissive, occlusion, metallic_roughness) = if lit && !m.unlit {
             (
-                slot(&m.emissive_texture, ColorSpace::Srgb)?,
-                slot(&m.occlusion_texture, ColorSpace::Linear)?,
-                slot(&m.metallic_roughness_texture, ColorSpace::Linear)?,
+                slot(&m.emissive_texture, ColorSpace::Srgb, AlphaUse::Ignored)?,
+                slot(&m.occlusion_texture, ColorSpace::Linear, AlphaUse::Ignored)?,
+                slot(
+                    &m.metallic_roughness_texture,
+                    ColorSpace::Linear,
+                    AlphaUse::Ignored,
+                )?,
             )
         } else {
             (None, None, None)
@@ -271,7 +281,7 @@ fn prepare_textures(
         // Normal maps only under per-pixel shading, where they can show.
         let per_pixel = matches!(options.shading, Shading::Phong | Shading::Hybrid);
         let normal = if lit && !m.unlit && per_pixel {
-            slot(&m.normal_texture, ColorSpace::Linear)?
+            slot(&m.normal_texture, ColorSpace::Linear, AlphaUse::Ignored)?
         } else {
             None
         };

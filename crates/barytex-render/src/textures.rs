@@ -85,14 +85,57 @@ fn prepare<T: Texel>(
     descriptor: SamplerDescriptor,
     mipmapped: bool,
 ) -> Result<TextureSampler<T>, TextureError> {
+    prepare_owned(texture.clone(), descriptor, mipmapped)
+}
+
+fn prepare_owned<T: Texel>(
+    texture: Texture2d<T>,
+    descriptor: SamplerDescriptor,
+    mipmapped: bool,
+) -> Result<TextureSampler<T>, TextureError> {
     Ok(if mipmapped {
         TextureSampler::new(
-            MipChain::generate(texture.clone(), &MipOptions::default())?,
+            MipChain::generate(texture, &MipOptions::default())?,
             descriptor,
         )
     } else {
-        TextureSampler::single_level(texture.clone(), descriptor)
+        TextureSampler::single_level(texture, descriptor)
     })
+}
+
+/// How a texture's alpha is read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum AlphaUse {
+    /// Alpha is coverage: filtering blends premultiplied colour (the base colour of MASK and
+    /// BLEND materials).
+    Coverage,
+    /// Alpha is ignored: every texel counts as opaque, so its colour is filtered as stored
+    /// whatever its alpha — glTF's OPAQUE base colour (§3.9.4 "Alpha Coverage"), and every
+    /// texture whose alpha the material never reads (emissive, occlusion, metallic-roughness,
+    /// normal), as a GPU filters them.
+    Ignored,
+}
+
+/// `texture` for `alpha`: itself, or (when alpha is ignored and some texel is not opaque) a
+/// copy whose every texel has alpha one, its colour as stored.
+fn prepared_for<T: Texel>(
+    texture: &Texture2d<T>,
+    alpha: AlphaUse,
+    descriptor: SamplerDescriptor,
+    mipmapped: bool,
+) -> Result<TextureSampler<T>, TextureError> {
+    let opaque = |t: &T| t.to_linear().w == 1.0;
+    if alpha == AlphaUse::Coverage || texture.texels().iter().all(opaque) {
+        return prepare(texture, descriptor, mipmapped);
+    }
+    let mut copy = texture.clone();
+    for t in copy.texels_mut() {
+        let c = t.to_linear();
+        if c.w != 1.0 {
+            *t = T::from_linear(c.truncate().extend(1.0));
+        }
+    }
+    prepare_owned(copy, descriptor, mipmapped)
 }
 
 /// A material's texture slot ready to sample: the texture and its uv mapping.
@@ -108,9 +151,9 @@ pub(crate) struct Slot {
 #[derive(Debug, Default)]
 pub(crate) struct Textures {
     pub(crate) list: Vec<PreparedTexture>,
-    /// (image, sRGB?, the glTF sampler) → index into `list`; the render's [`Filter`] is the
+    /// (image, sRGB?, the glTF sampler, how alpha is read) → index into `list`; the render's [`Filter`] is the
     /// same for every texture, so the glTF sampler decides the descriptor.
-    index: HashMap<(usize, bool, SamplerParams), usize>,
+    index: HashMap<(usize, bool, SamplerParams, AlphaUse), usize>,
     /// Mip chains built.
     pub(crate) mip_chains: usize,
     /// Textures whose filter uses mipmaps but that are never minified: no chain built.
@@ -131,6 +174,7 @@ impl Textures {
         scene: &Scene,
         r: &TextureRef,
         space: ColorSpace,
+        alpha: AlphaUse,
         filter: Filter,
         minification: MinificationProbe<'_>,
     ) -> Result<Option<Slot>, TextureError> {
@@ -141,7 +185,7 @@ impl Textures {
         let Some(decoded) = (if srgb { &image.srgb } else { &image.linear }) else {
             return Ok(None);
         };
-        let key = (r.image.unwrap_or(usize::MAX), srgb, r.sampler);
+        let key = (r.image.unwrap_or(usize::MAX), srgb, r.sampler, alpha);
         let texture = if let Some(&i) = self.index.get(&key) {
             i
         } else {
@@ -167,17 +211,19 @@ impl Textures {
             let preparing = std::time::Instant::now();
             let prepared = match decoded.as_ref() {
                 AnyTexture2d::Srgba8(t) => {
-                    PreparedTexture::Srgba8(prepare(t, descriptor, mipmapped)?)
+                    PreparedTexture::Srgba8(prepared_for(t, alpha, descriptor, mipmapped)?)
                 }
                 AnyTexture2d::Rgba8(t) => {
-                    PreparedTexture::Rgba8(prepare(t, descriptor, mipmapped)?)
+                    PreparedTexture::Rgba8(prepared_for(t, alpha, descriptor, mipmapped)?)
                 }
-                AnyTexture2d::R8(t) => PreparedTexture::R8(prepare(t, descriptor, mipmapped)?),
+                AnyTexture2d::R8(t) => {
+                    PreparedTexture::R8(prepared_for(t, alpha, descriptor, mipmapped)?)
+                }
                 AnyTexture2d::Rgba16f(t) => {
-                    PreparedTexture::Rgba16f(prepare(t, descriptor, mipmapped)?)
+                    PreparedTexture::Rgba16f(prepared_for(t, alpha, descriptor, mipmapped)?)
                 }
                 AnyTexture2d::Rgba32f(t) => {
-                    PreparedTexture::Rgba32f(prepare(t, descriptor, mipmapped)?)
+                    PreparedTexture::Rgba32f(prepared_for(t, alpha, descriptor, mipmapped)?)
                 }
                 _ => return Ok(None),
             };
