@@ -14,7 +14,7 @@ fn centre(alpha: u8, alpha_mode: &str) -> [u8; 4] {
     ));
     std::fs::create_dir_all(&dir).expect("temp folder");
     let texels = Texture2d::from_texels(2, 2, vec![Srgba8([255, 0, 0, alpha]); 4]).expect("tiny");
-    barytex_texture::load::save_png(&texels, &dir.join("red.png")).expect("writes");
+    barytex_texture::load::save_png(&texels, dir.join("red.png")).expect("writes");
     // Two triangles over [-1, 1]² at z = 0 with uvs, 4 positions then 4 uvs.
     let floats: [f32; 20] = [
         -1.0, -1.0, 0.0, 1.0, -1.0, 0.0, 1.0, 1.0, 0.0, -1.0, 1.0, 0.0, //
