@@ -103,6 +103,15 @@ pub enum RenderError {
         /// How many elements were asked for.
         count: usize,
     },
+    /// The scene asks for something this renderer does not draw, rather than drawing it
+    /// differently: a material sampling a texture coordinate set other than `TEXCOORD_0` and
+    /// `TEXCOORD_1` (the loader decodes those two).
+    Unsupported {
+        /// The material's index (`None`: the default material).
+        material: Option<usize>,
+        /// What it asks for.
+        what: String,
+    },
 }
 
 impl fmt::Display for RenderError {
@@ -118,6 +127,13 @@ impl fmt::Display for RenderError {
             Self::OutOfMemory { what, count } => {
                 write!(f, "out of memory allocating {count} {what}")
             }
+            Self::Unsupported { material, what } => match material {
+                Some(m) => write!(f, "material {m} asks for {what}, which is not supported"),
+                None => write!(
+                    f,
+                    "the default material asks for {what}, which is not supported"
+                ),
+            },
         }
     }
 }

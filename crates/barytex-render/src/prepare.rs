@@ -252,6 +252,17 @@ fn prepare_textures(
     let mut slots = Vec::with_capacity(items.len());
     for material in &item_materials {
         let m = scene.material(*material);
+        // Only TEXCOORD_0 and _1 are decoded: refuse rather than sample another set.
+        if let Some((r, _)) = m
+            .texture_refs()
+            .into_iter()
+            .find(|(r, _)| r.mapping.set > 1)
+        {
+            return Err(RenderError::Unsupported {
+                material: *material,
+                what: format!("TEXCOORD_{}", r.mapping.set),
+            });
+        }
         let mut slot = |r: &Option<TextureRef>, space, alpha| -> Result<_, TextureError> {
             match r {
                 Some(r) => textures.slot(scene, r, space, alpha, options.filter, &minification),
