@@ -33,7 +33,7 @@ pub(crate) struct DrawItem<'a> {
     pub(crate) blended: bool,
     /// View-space depth of the primitive's centre (for back-to-front blending).
     pub(crate) depth: f32,
-    /// Per texture-coordinate set: the largest √(uv area / screen area) of its triangles.
+    /// Per texture-coordinate set: the most uv one pixel can cover ([`uv_per_pixel`]).
     pub(crate) uv_per_pixel: [f32; 2],
 }
 
@@ -233,15 +233,15 @@ fn prepare_textures(
             refs.iter().map(|(t, _)| t.image).collect()
         })
         .collect();
+    // Texels per pixel, at most: the uv stretch per pixel times the largest stretch of
+    // uv → texels (the texture's size after its KHR_texture_transform).
     let minification = |r: &TextureRef, (w, h): (u32, u32)| -> f32 {
-        let det = r
-            .mapping
-            .transform
-            .x_axis
-            .truncate()
-            .perp_dot(r.mapping.transform.y_axis.truncate())
-            .abs();
-        let texels = (w as f32 * h as f32 * det).sqrt();
+        let m = r.mapping.transform;
+        let (w, h) = (w as f32, h as f32);
+        let texels = largest_stretch([
+            Vec2::new(m.x_axis.x * w, m.y_axis.x * w),
+            Vec2::new(m.x_axis.y * h, m.y_axis.y * h),
+        ]);
         items
             .iter()
             .zip(&item_images)
@@ -394,7 +394,26 @@ fn choose_camera(scene: &Scene, options: &RenderOptions) -> Result<RenderCamera,
     }
 }
 
-/// √(uv area / screen area) maximised over the triangles, per texture-coordinate set.
+/// The largest singular value of a 2 × 2 matrix given by its rows: how far it stretches any
+/// unit vector.
+fn largest_stretch(rows: [Vec2; 2]) -> f32 {
+    let [a, b] = rows;
+    let sum = a.length_squared() + b.length_squared();
+    let det = a.perp_dot(b);
+    let root = (sum * sum - 4.0 * det * det).max(0.0).sqrt();
+    ((sum + root) * 0.5).sqrt()
+}
+
+/// How much texture space one pixel can cover, per texture coordinate set: the largest stretch
+/// of the screen → uv Jacobian (uv units per pixel along the worst direction, so anisotropic
+/// minification counts), evaluated exactly under perspective at every vertex — the Jacobian's
+/// extremes over a triangle are at its corners, where the far one minifies most — and maximised
+/// over the triangles. Conservative: a triangle crossing the eye plane (a floor running under
+/// the camera) counts as infinitely minified, since its visible part cannot be bounded here.
+///
+/// With screen positions `sᵢ`, screen-space barycentric gradients `∇bᵢ` and clip `wᵢ`, the
+/// perspective-correct `uv = (Σ bᵢ uvᵢ/wᵢ) / (Σ bᵢ/wᵢ)` has at vertex `i` the Jacobian
+/// `wᵢ (Q − uvᵢ Rᵀ)` with `Q = Σ uvⱼ/wⱼ ∇bⱼᵀ`, `R = Σ ∇bⱼ/wⱼ` (the quotient rule).
 fn uv_per_pixel(
     clip: &[Vec4],
     uvs: [Option<&[Vec2]>; 2],
@@ -404,19 +423,42 @@ fn uv_per_pixel(
     let mut out = [0.0_f32; 2];
     for t in triangles {
         let c = t.map(|i| clip.get(i as usize).copied().unwrap_or(Vec4::NAN));
-        if c.iter().any(|p| !p.is_finite() || p.w <= 0.0) {
+        if c.iter().any(|p| !p.is_finite()) || c.iter().all(|p| p.w <= 0.0) {
+            continue;
+        }
+        if c.iter().any(|p| p.w <= 0.0) {
+            for (k, set) in uvs.iter().enumerate() {
+                if set.is_some() {
+                    out[k] = f32::INFINITY;
+                }
+            }
             continue;
         }
         let s = c.map(|p| Vec2::new(p.x / p.w, p.y / p.w) * size * 0.5);
-        let screen = (s[1] - s[0]).perp_dot(s[2] - s[0]).abs() * 0.5;
-        if screen < 1e-6 {
+        let twice_area = (s[1] - s[0]).perp_dot(s[2] - s[0]);
+        if twice_area.abs() < 1e-6 {
             continue;
         }
+        let gradient = |i: usize| {
+            let (a, b) = (s[(i + 1) % 3], s[(i + 2) % 3]);
+            Vec2::new(a.y - b.y, b.x - a.x) / twice_area
+        };
+        let grad = [gradient(0), gradient(1), gradient(2)];
+        let inv_w = c.map(|p| 1.0 / p.w);
+        let r = grad[0] * inv_w[0] + grad[1] * inv_w[1] + grad[2] * inv_w[2];
         for (k, set) in uvs.iter().enumerate() {
-            if let Some(uv) = set {
-                let u = t.map(|i| uv.get(i as usize).copied().unwrap_or(Vec2::ZERO));
-                let area = (u[1] - u[0]).perp_dot(u[2] - u[0]).abs() * 0.5;
-                out[k] = out[k].max((area / screen).sqrt());
+            let Some(uv) = set else { continue };
+            let u = t.map(|i| uv.get(i as usize).copied().unwrap_or(Vec2::ZERO));
+            let q_u = (0..3).map(|j| grad[j] * (u[j].x * inv_w[j])).sum::<Vec2>();
+            let q_v = (0..3).map(|j| grad[j] * (u[j].y * inv_w[j])).sum::<Vec2>();
+            for i in 0..3 {
+                let w = c[i].w;
+                let stretch = largest_stretch([(q_u - u[i].x * r) * w, (q_v - u[i].y * r) * w]);
+                if stretch.is_finite() {
+                    out[k] = out[k].max(stretch);
+                } else {
+                    out[k] = f32::INFINITY;
+                }
             }
         }
     }
