@@ -34,7 +34,8 @@ CONVENTIONS = {
 
 PREMULTIPLIED = (
     "barytex filters textures on premultiplied alpha in linear light (its texture crate's "
-    "convention, which keeps the colour of transparent texels out of the filter); OpenGL filters the "
+    "convention, docs/CONVENTIONS.md's texture row, which keeps the colour of transparent texels out "
+    "of the filter); OpenGL filters the "
     "stored straight-alpha texels (OpenGL 4.6 §8.14, §8.15: the filter weights the texel values as "
     "stored, after sRGB decoding, §8.24), so the colour of transparent texels bleeds into edges. With "
     "the reference's textures uploaded premultiplied in linear light (RGBA32F, divided by alpha after "
@@ -181,8 +182,10 @@ def main():
             else:
                 row["verdict"] = "**below**"
             if row["verdict"] not in ("pass", "vacuous"):
-                row["picture"] = f"{f.parent.parent.name}-{f.parent.name}.png".replace(" ", "_")
-                side_by_side(bx, gl, bg, images / row["picture"])
+                # One picture per model (its variants hold the same scene).
+                row["picture"] = f"{row['model']}.png".replace(" ", "_")
+                if not (images / row["picture"]).exists():
+                    side_by_side(bx, gl, bg, images / row["picture"])
             rows.append(row)
             print(f"{name}: PSNR {fmt_db(row['psnr'])} dB (both covered {fmt_db(row['psnr_both'])}), "
                   f"coverage mismatch {row['mismatch']} px ({row['off_edge']} off silhouettes), {row['verdict']}")
@@ -220,9 +223,9 @@ def write_doc(path, rows, gl_name, version, seconds):
         "both images have a coverage boundary. PSNR (8-bit sRGB, RGB) is over the union of covered pixels",
         "(∪) and, to separate shading from coverage, over the pixels both cover (∩). *PSNR∪ premul.*: the",
         "same, with the reference filtering textures as barytex does (premultiplied alpha, linear light).",
-        "*>8*: pixels both",
-        "cover whose channels differ by more than 8/255. *camera*: the largest difference between the",
-        "matrices barytex printed and README's automatic camera recomputed here, relative to the largest",
+        "*>8*: pixels both cover whose channels differ by more than 8/255. *camera*: the largest",
+        "difference between the matrices barytex printed and README's automatic camera recomputed here,",
+        "relative to the largest",
         "entry (the printout has 6 decimals).",
         "",
         f"**The bar:** PSNR∪ ≥ {BAR_DB:.0f} dB and coverage differing only along silhouettes, or a",
@@ -250,16 +253,21 @@ def write_doc(path, rows, gl_name, version, seconds):
               "Pictures: barytex | llvmpipe | absolute difference × 4 with coverage mismatches in magenta.", ""]
     notes = Path(__file__).with_name("notes.md")
     explained = parse_notes(notes.read_text()) if notes.exists() else {}
-    for r in failing:
-        why = CONVENTIONS.get(r["model"]) or r.get("why", "").format(premul=fmt_db(r["psnr_premul"]))
+    for model in dict.fromkeys(r["model"] for r in failing):
+        group = [r for r in failing if r["model"] == model]
+        r = group[0]
+        why = CONVENTIONS.get(model) or r.get("why", "").format(premul=fmt_db(r["psnr_premul"]))
         if r["verdict"] == "vacuous":
             why = VACUOUS
-        note = explained.get(r["model"])
-        lines += [f"### {r['name']} — {r['verdict']}", ""] + [t for t in (why, note) if t] + [""]
-        if not why and not note:
-            lines += ["*Not yet explained.*", ""]
+        variants = ", ".join(g["name"].split("/", 1)[1] for g in group)
+        lines += [f"### {model} ({variants}) — {r['verdict']}", ""]
+        for text in [t for t in (why, explained.get(model)) if t] or ["*Not yet explained.*"]:
+            lines += [text, ""]
         if "picture" in r:
-            lines += [f"![{r['name']}](conformance/{r['picture']})", ""]
+            lines += [f"![{model}](conformance/{r['picture']})", ""]
+    for title in ("Findings", "Not covered"):
+        if title in explained:
+            lines += [f"## {title}", "", explained[title], ""]
     path.write_text("\n".join(lines) + "\n")
 
 
