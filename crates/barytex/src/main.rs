@@ -55,9 +55,9 @@ struct RenderArgs {
     /// and where) and exit without rendering.
     #[arg(long)]
     list_cameras: bool,
-    /// The colour where nothing is drawn, sRGB: #rrggbb, #rrggbbaa or r,g,b[,a] with each 0 to
-    /// 255; alpha below 255 is kept in the PNG (#00000000: transparent, so alpha is the
-    /// coverage). Fog fades to it. Default: #76767c, opaque.
+    /// The colour where nothing is drawn, sRGB: `#rrggbb`, `#rrggbbaa` or `r,g,b[,a]` with
+    /// each 0 to 255; alpha below 255 is kept in the PNG (`#00000000`: transparent, so alpha
+    /// is the coverage). Fog fades to it. Default: `#76767c`, opaque.
     #[arg(long, value_name = "COLOUR", allow_hyphen_values = true)]
     background: Option<String>,
     /// unlit (glTF's unlit model: base colour × texture × vertex colour), flat, gouraud,

@@ -554,7 +554,9 @@ mod tests {
             "#",
             "#ééé",
         ] {
-            let error = parse_background(bad).unwrap_err();
+            let Err(error) = parse_background(bad) else {
+                panic!("{bad} was accepted");
+            };
             assert!(error.starts_with("background `"), "{bad}: {error}");
             assert_eq!(error.lines().count(), 1, "{bad}: {error}");
         }
