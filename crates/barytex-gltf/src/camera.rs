@@ -170,6 +170,35 @@ impl Projection {
     }
 }
 
+/// One of the document's `cameras` (glTF 2.0 §5.12), placed by any node or none.
+///
+/// [`Scene::document_cameras`](crate::Scene::document_cameras) keeps every one, by its index in
+/// the document; [`Scene::cameras`](crate::Scene::cameras) keeps the placements.
+///
+/// ```
+/// use barytex_gltf::{LoadOptions, Projection, load_slice};
+///
+/// // Two cameras; the scene places only the second, twice.
+/// let gltf = br#"{"asset": {"version": "2.0"},
+///   "cameras": [{"name": "spare", "type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}},
+///               {"type": "orthographic", "orthographic": {"xmag": 1, "ymag": 1, "znear": 0, "zfar": 9}}],
+///   "nodes": [{"camera": 1}, {"camera": 1, "translation": [0, 0, 5]}], "scenes": [{"nodes": [0, 1]}]}"#;
+/// let scene = load_slice(gltf, &LoadOptions::default())?;
+/// assert_eq!(scene.document_cameras.len(), 2);
+/// assert_eq!(scene.document_cameras[0].name.as_deref(), Some("spare"));
+/// assert!(matches!(scene.document_cameras[1].projection, Projection::Orthographic { .. }));
+/// // The placements, in scene order, name the document index.
+/// assert_eq!(scene.cameras.iter().map(|c| (c.node, c.camera)).collect::<Vec<_>>(), [(0, 1), (1, 1)]);
+/// # Ok::<(), barytex_gltf::SceneError>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct DocumentCamera {
+    /// The camera's name, if any.
+    pub name: Option<String>,
+    /// The projection.
+    pub projection: Projection,
+}
+
 /// A camera placed in the flattened scene.
 ///
 /// ```
@@ -189,7 +218,8 @@ impl Projection {
 pub struct SceneCamera {
     /// Index of the node carrying it.
     pub node: usize,
-    /// Index into the document's `cameras`.
+    /// Index into the document's `cameras` (and
+    /// [`Scene::document_cameras`](crate::Scene::document_cameras)).
     pub camera: usize,
     /// The camera's name, if any.
     pub name: Option<String>,

@@ -15,7 +15,7 @@ use serde_json::Value;
 use crate::accessor::{AccessorDef, Reader, ViewDef};
 use crate::animation::{AnimationContext, KeyframeChecks};
 use crate::buffer::{self, BufferDef, Source};
-use crate::camera::{Projection, SceneCamera};
+use crate::camera::{DocumentCamera, Projection, SceneCamera};
 use crate::image::{ImageDef, ImageSource};
 use crate::json::{Obj, as_obj, child};
 use crate::light::{PunctualLight, SceneLight};
@@ -779,6 +779,11 @@ impl Document {
             scene_count: self.scenes.len(),
             instances,
             cameras,
+            document_cameras: self
+                .cameras
+                .into_iter()
+                .map(|(name, projection)| DocumentCamera { name, projection })
+                .collect(),
             lights,
             materials: self.materials,
             textures: self.textures,

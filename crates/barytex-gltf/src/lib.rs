@@ -74,7 +74,7 @@ mod variants;
 use std::path::{Path, PathBuf};
 
 pub use access::{ResolveError, UriResolver};
-pub use camera::{Projection, SceneCamera};
+pub use camera::{DocumentCamera, Projection, SceneCamera};
 pub use error::SceneError;
 pub use light::{LightKind, PunctualLight, SceneLight};
 pub use limits::SceneLimits;

@@ -6,7 +6,7 @@ use std::sync::Arc;
 use barytex_texture::load::AnyTexture2d;
 use glam::Mat4;
 
-use crate::camera::SceneCamera;
+use crate::camera::{DocumentCamera, SceneCamera};
 use crate::light::SceneLight;
 use crate::material::Material;
 use crate::mesh::Mesh;
@@ -116,8 +116,11 @@ pub struct Scene {
     pub scene_count: usize,
     /// Every mesh placement, in depth-first node order.
     pub instances: Vec<MeshInstance>,
-    /// Cameras placed by the scene's nodes.
+    /// Cameras placed by the scene's nodes, in depth-first node order (a camera placed by two
+    /// nodes appears twice; one placed by none is absent).
     pub cameras: Vec<SceneCamera>,
+    /// The document's cameras, by index, whether the scene places them or not.
+    pub document_cameras: Vec<DocumentCamera>,
     /// Lights placed by the scene's nodes.
     pub lights: Vec<SceneLight>,
     /// The document's materials, by index.

@@ -15,7 +15,7 @@ use barytex_uv::mappings::TexCoordMapping;
 use glam::{Mat4, Quat, Vec3};
 
 use crate::{AntiAliasing, Filter, RenderOptions};
-use barytex_gltf::camera::{Projection, SceneCamera};
+use barytex_gltf::camera::{DocumentCamera, Projection, SceneCamera};
 use barytex_gltf::light::{LightKind, PunctualLight, SceneLight};
 use barytex_gltf::material::{Material, TextureRef};
 use barytex_gltf::mesh::{Mesh, Primitive};
@@ -400,9 +400,7 @@ pub fn demo_scene() -> Scene {
             look_at(Vec3::new(4.5, 5.0, 3.0), Vec3::new(2.7, 1.0, 0.2)),
         ),
     ];
-    let cameras = vec![SceneCamera {
-        node: 20,
-        camera: 0,
+    let camera = DocumentCamera {
         name: Some("demo".to_owned()),
         projection: Projection::Perspective {
             yfov: 45_f32.to_radians(),
@@ -410,6 +408,12 @@ pub fn demo_scene() -> Scene {
             znear: 0.1,
             zfar: Some(200.0),
         },
+    };
+    let cameras = vec![SceneCamera {
+        node: 20,
+        camera: 0,
+        name: camera.name.clone(),
+        projection: camera.projection,
         world: look_at(Vec3::new(0.0, 2.4, 7.5), Vec3::new(0.0, 0.9, 0.0)),
     }];
     let triangles: usize = instances.iter().map(MeshInstance::triangle_count).sum();
@@ -419,6 +423,7 @@ pub fn demo_scene() -> Scene {
         scene_count: 1,
         instances,
         cameras,
+        document_cameras: vec![camera],
         lights,
         materials,
         textures,

@@ -48,7 +48,8 @@ pub struct RenderCamera {
 /// Where a render's camera came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CameraSource {
-    /// The scene's camera with this index.
+    /// The document's camera with this index (glTF `cameras[i]`), where the first node of the
+    /// scene that instantiates it places it.
     Scene(usize),
     /// The automatic camera.
     Auto,
@@ -177,34 +178,44 @@ pub fn auto_camera(scene: &Scene, aspect: f32) -> Option<RenderCamera> {
     })
 }
 
-/// The scene's camera `index` for an image of aspect `aspect`; `None` when there is no such
-/// camera or its placement is singular.
+/// The document's camera `index` (glTF `cameras[index]`, glTF 2.0 §3.10.2), placed by the first
+/// node of the scene that instantiates it (depth-first, in the scene's node order, as
+/// [`Scene::cameras`] lists the placements), for an image of aspect `aspect`; `None` when no
+/// node of the scene places that camera or its placement is singular.
 ///
 /// ```
-/// use barytex_render::scene_camera;
+/// use barytex_render::{CameraSource, scene_camera};
 /// use glam::Vec3;
 ///
+/// // Node 2 places camera 1 before node 3 places camera 0; node 4 places camera 0 again.
 /// let gltf = r#"{"asset": {"version": "2.0"},
 ///   "buffers": [{"byteLength": 36, "uri":
 ///     "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
 ///   "bufferViews": [{"buffer": 0, "byteLength": 36}],
 ///   "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
 ///                  "min": [0, 0, 0], "max": [1, 1, 0]}],
-///   "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+///   "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}},
+///               {"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}},
+///               {"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
 ///   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
-///   "nodes": [{"mesh": 0}, {"mesh": 0, "translation": [0, 0, -2]}, {"camera": 0, "translation": [0, 1, 5]}],
-///   "scenes": [{"nodes": [0, 1, 2]}]}"#;
+///   "nodes": [{"mesh": 0}, {"mesh": 0, "translation": [0, 0, -2]},
+///             {"camera": 1, "translation": [0, 0, 9]}, {"camera": 0, "translation": [0, 1, 5]},
+///             {"camera": 0, "translation": [7, 7, 7]}],
+///   "scenes": [{"nodes": [0, 1, 2, 3, 4]}]}"#;
 /// let scene = barytex_gltf::load_slice(gltf.as_bytes(), &barytex_gltf::LoadOptions::default())?;
 /// let camera = scene_camera(&scene, 0, 16.0 / 9.0).unwrap();
 /// assert_eq!(camera.eye, Vec3::new(0.0, 1.0, 5.0));
+/// assert_eq!(camera.source, CameraSource::Scene(0));
 /// // The camera fixes no aspect ratio, so the image's is used: x is scaled by 9/16 of y.
 /// assert!((camera.projection_gl.x_axis.x / camera.projection_gl.y_axis.y - 9.0 / 16.0).abs() < 1e-6);
-/// assert!(scene_camera(&scene, 1, 1.0).is_none());
+/// assert_eq!(scene_camera(&scene, 1, 1.0).unwrap().eye, Vec3::new(0.0, 0.0, 9.0));
+/// // Camera 2 is in the document but no node places it; there is no camera 3.
+/// assert!(scene_camera(&scene, 2, 1.0).is_none() && scene_camera(&scene, 3, 1.0).is_none());
 /// # Ok::<(), barytex_gltf::SceneError>(())
 /// ```
 #[must_use]
 pub fn scene_camera(scene: &Scene, index: usize, aspect: f32) -> Option<RenderCamera> {
-    let camera = scene.cameras.get(index)?;
+    let camera = scene.cameras.iter().find(|c| c.camera == index)?;
     let view = camera.world.inverse();
     if !view.is_finite() {
         return None;
@@ -280,7 +291,7 @@ impl RenderCamera {
                 .join("\n")
         };
         let source = match self.source {
-            CameraSource::Scene(i) => format!("scene camera {i}"),
+            CameraSource::Scene(i) => format!("glTF camera {i}"),
             CameraSource::Auto => "automatic camera".to_owned(),
         };
         format!(

@@ -58,6 +58,7 @@ use barytex_texture::TextureError;
 
 pub use framing::{CameraSource, RenderCamera, auto_camera, scene_bounds, scene_camera};
 pub use options::{AntiAliasing, CameraChoice, Filter, RenderOptions, ResolvedFilter, Shading};
+pub use prepare::choose_camera;
 pub use stats::RenderStats;
 
 use passes::Varyings;
@@ -74,18 +75,48 @@ use passes::Varyings;
 /// assert_eq!(render(&empty, &second).unwrap_err(), RenderError::NoSuchCamera { index: 1, count: 0 });
 /// let no_pixels = RenderOptions { width: 0, ..small };
 /// assert!(matches!(render(&empty, &no_pixels), Err(RenderError::InvalidOption(_))));
+///
+/// // `CameraChoice::Index` is the document's index: a camera no node of the scene places is
+/// // refused by name.
+/// let gltf = br#"{"asset": {"version": "2.0"},
+///   "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}},
+///               {"name": "spare", "type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+///   "nodes": [{"camera": 0}], "scenes": [{"nodes": [0]}]}"#;
+/// let scene = barytex_gltf::load_slice(gltf, &barytex_gltf::LoadOptions::default()).unwrap();
+/// let spare = RenderOptions { camera: CameraChoice::Index(1), ..small };
+/// let error = render(&scene, &spare).unwrap_err();
+/// assert_eq!(error, RenderError::CameraNotPlaced { index: 1, name: Some("spare".into()), scene: Some(0) });
+/// assert_eq!(error.to_string(), "camera 1 (\"spare\") is not placed by any node of scene 0");
+/// let third = RenderOptions { camera: CameraChoice::Index(2), ..small };
+/// assert_eq!(render(&scene, &third).unwrap_err().to_string(), "no camera 2: the document has 2 cameras");
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum RenderError {
     /// The scene has no finite vertex to look at (and no camera was given).
     NothingToFrame,
-    /// `--camera N` beyond the scene's cameras.
+    /// `--camera N` beyond the document's cameras.
     NoSuchCamera {
         /// The index asked for.
         index: usize,
-        /// Cameras in the scene.
+        /// Cameras in the document.
         count: usize,
+    },
+    /// `--camera N` for a camera of the document that no node of the scene places.
+    CameraNotPlaced {
+        /// The index asked for.
+        index: usize,
+        /// The camera's name, if any.
+        name: Option<String>,
+        /// The scene (`None`: the document has no scenes and every root node was used).
+        scene: Option<usize>,
+    },
+    /// `--camera N` placed by a node whose world matrix has no inverse (a zero scale).
+    SingularCamera {
+        /// The index asked for.
+        index: usize,
+        /// The first node that places it.
+        node: usize,
     },
     /// A parameter out of range (size, sample count).
     InvalidOption(String),
@@ -119,8 +150,23 @@ impl fmt::Display for RenderError {
         match self {
             Self::NothingToFrame => write!(f, "the scene has no finite vertex to frame"),
             Self::NoSuchCamera { index, count } => {
-                write!(f, "camera {index} asked for, the scene has {count}")
+                let s = if *count == 1 { "" } else { "s" };
+                write!(f, "no camera {index}: the document has {count} camera{s}")
             }
+            Self::CameraNotPlaced { index, name, scene } => {
+                write!(f, "camera {index}")?;
+                if let Some(name) = name {
+                    write!(f, " ({name:?})")?;
+                }
+                match scene {
+                    Some(scene) => write!(f, " is not placed by any node of scene {scene}"),
+                    None => write!(f, " is not placed by any node of the scene"),
+                }
+            }
+            Self::SingularCamera { index, node } => write!(
+                f,
+                "camera {index} is placed by node {node}, whose world matrix has no inverse"
+            ),
             Self::InvalidOption(why) => write!(f, "invalid render option: {why}"),
             Self::Texture(e) => write!(f, "{e}"),
             Self::Raster(e) => write!(f, "{e}"),

@@ -9,13 +9,16 @@ use glam::Vec4;
 /// Which camera to look through.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum CameraChoice {
-    /// The scene's first camera, or the automatic camera when it has none.
+    /// The first camera the scene places (depth-first, in its node order), or the automatic
+    /// camera when it places none.
     #[default]
     First,
     /// The automatic camera (see [`auto_camera`](crate::auto_camera)), even when the
     /// scene has cameras.
     Auto,
-    /// The scene's camera `n` (in node order).
+    /// The document's camera `n` (glTF `cameras[n]`), placed by the first node of the scene
+    /// that instantiates it (see [`scene_camera`](crate::scene_camera)); an error when the
+    /// document has no camera `n` or the scene places it nowhere.
     Index(usize),
 }
 

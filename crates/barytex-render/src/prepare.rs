@@ -377,20 +377,43 @@ fn split_by_highlight(
     (hybrid_phong, hybrid_gouraud)
 }
 
-/// The camera for `options`.
-fn choose_camera(scene: &Scene, options: &RenderOptions) -> Result<RenderCamera, RenderError> {
+/// The camera a render of `scene` with `options` looks through ([`RenderOptions::camera`] at
+/// the aspect of [`RenderOptions::width`] / [`RenderOptions::height`]), or why there is none:
+/// what [`render`](crate::render) does first, for callers that check before they start.
+///
+/// # Errors
+/// [`RenderError::NoSuchCamera`], [`RenderError::CameraNotPlaced`] and
+/// [`RenderError::SingularCamera`] for a [`CameraChoice::Index`];
+/// [`RenderError::NothingToFrame`] where the automatic camera has nothing to look at.
+pub fn choose_camera(scene: &Scene, options: &RenderOptions) -> Result<RenderCamera, RenderError> {
     let aspect = options.width as f32 / options.height as f32;
     match options.camera {
         CameraChoice::Index(index) => {
-            scene_camera(scene, index, aspect).ok_or(RenderError::NoSuchCamera {
+            let Some(placed) = scene.cameras.iter().find(|c| c.camera == index) else {
+                return Err(match scene.document_cameras.get(index) {
+                    Some(camera) => RenderError::CameraNotPlaced {
+                        index,
+                        name: camera.name.clone(),
+                        scene: scene.scene_index,
+                    },
+                    None => RenderError::NoSuchCamera {
+                        index,
+                        count: scene.document_cameras.len(),
+                    },
+                });
+            };
+            scene_camera(scene, index, aspect).ok_or(RenderError::SingularCamera {
                 index,
-                count: scene.cameras.len(),
+                node: placed.node,
             })
         }
-        CameraChoice::First if !scene.cameras.is_empty() => scene_camera(scene, 0, aspect)
-            .or_else(|| auto_camera(scene, aspect))
-            .ok_or(RenderError::NothingToFrame),
-        _ => auto_camera(scene, aspect).ok_or(RenderError::NothingToFrame),
+        CameraChoice::First => match scene.cameras.first() {
+            Some(first) => scene_camera(scene, first.camera, aspect)
+                .or_else(|| auto_camera(scene, aspect))
+                .ok_or(RenderError::NothingToFrame),
+            None => auto_camera(scene, aspect).ok_or(RenderError::NothingToFrame),
+        },
+        CameraChoice::Auto => auto_camera(scene, aspect).ok_or(RenderError::NothingToFrame),
     }
 }
 

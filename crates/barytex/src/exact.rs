@@ -114,6 +114,13 @@ impl Q {
         }
     }
 
+    /// `⌈self⌉`, `None` beyond the `i64` range.
+    #[must_use]
+    pub(crate) fn ceil(self) -> Option<i64> {
+        // den > 0: the floor of −num/den, negated.
+        i64::try_from(-(-self.num).div_euclid(self.den)).ok()
+    }
+
     /// The sign: 1, −1 or 0.
     #[must_use]
     pub(crate) fn signum(self) -> i8 {
@@ -174,6 +181,39 @@ impl fmt::Display for Q {
         } else {
             write!(f, "{}/{}", self.num, self.den)
         }
+    }
+}
+
+impl PartialOrd for Q {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Q {
+    /// a/b against c/d as a·d against c·b (both denominators positive).
+    ///
+    /// # Panics
+    /// When a product does not fit in `i128` ([`OVERFLOW`]).
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        let left = self.num.checked_mul(other.den).expect(OVERFLOW);
+        let right = other.num.checked_mul(self.den).expect(OVERFLOW);
+        left.cmp(&right)
+    }
+}
+
+/// The scanline fill's arithmetic (`barytex_raster::scanline`), exactly.
+impl barytex_raster::scanline::Scalar for Q {
+    fn from_i64(i: i64) -> Self {
+        Self::int(i)
+    }
+
+    fn half() -> Self {
+        Self::new(1, 2)
+    }
+
+    fn ceil_i64(&self) -> Option<i64> {
+        self.ceil()
     }
 }
 
@@ -405,6 +445,24 @@ mod tests {
         assert_eq!(Q::new(6, -4).to_string(), "-3/2");
         assert_eq!(Q::new(-7, 7).to_string(), "-1");
         assert_eq!((Q::int(1) / Q::int(3) * Q::int(3)).to_string(), "1");
+    }
+
+    /// Order and ceiling, against the big rationals' (what the scanline fill relies on).
+    #[test]
+    fn order_and_ceiling_match_big_rationals() {
+        let mut rng = XorShift::new(4);
+        for _ in 0..10_000 {
+            let (x, y) = (moderate_f32(&mut rng), moderate_f32(&mut rng));
+            let (a, b) = (Q::from_f32(x).unwrap(), Q::from_f32(y).unwrap());
+            assert_eq!(a.cmp(&b), big::qf(x).cmp(&big::qf(y)), "{x} vs {y}");
+            let ceil = big::qf(x).ceil().to_integer().to_i64();
+            assert_eq!(a.ceil(), ceil, "⌈{x}⌉");
+        }
+        assert_eq!(Q::new(-7, 2).ceil(), Some(-3));
+        assert_eq!(Q::new(7, 2).ceil(), Some(4));
+        assert_eq!(Q::int(-3).ceil(), Some(-3));
+        assert_eq!(Q::new(i128::MAX, 1).ceil(), None);
+        assert!(Q::new(1, 3) < Q::new(1, 2) && Q::new(-1, 2) < Q::new(-1, 3));
     }
 
     #[test]

@@ -1,14 +1,17 @@
 //! `barytex examples`: the worked examples of S. R. Buss, *3D Computer Graphics: A
 //! Mathematical Introduction with OpenGL* (2003), ch. IV, numbered as in A. Denisjuk's lecture
 //! *Interpolacja i teksturowanie* (University of Warmia and Mazury), run through
-//! `barytex-interp`, each checked against exact rational arithmetic ([`crate::exact`]), and a
-//! summary of Kettner's orientation grid. Every number is computed at run time.
+//! `barytex-interp`, each checked against exact rational arithmetic ([`crate::exact`]); the
+//! scanline triangle of S. Schaefer's *Shading/Texturing* lecture slides (Texas A&M University)
+//! filled by `barytex_raster::scanline` in exact arithmetic; and a summary of Kettner's
+//! orientation grid. Every number is computed at run time.
 
 use std::io::Write;
 
 use barytex_interp::hard_cases::kettner_grid;
 use barytex_interp::methods::{orient2d_dop_f32, orient2d_naive_f32};
 use barytex_interp::{InverseBilinear, barycentric_2d, bilinear, inverse_bilinear_2d, orient2d};
+use barytex_raster::scanline::{SampleRule, ScanVertex, scanline_fill};
 use glam::{DVec2, Vec2};
 
 use crate::exact::{self, Q};
@@ -116,11 +119,13 @@ pub(crate) fn run() -> Result {
         out,
         "This runs the worked examples of S. R. Buss, 3D \
          Computer Graphics (2003), ch. IV,\nnumbered as in A. Denisjuk's lecture notes \
-         \"Interpolacja i teksturowanie\", through barytex-interp\nand checks every result \
-         against exact rational arithmetic, computed now.\n"
+         \"Interpolacja i teksturowanie\", through barytex-interp, and S. Schaefer's scanline\n\
+         triangle through barytex-raster, and checks every result against exact rational \
+         arithmetic, computed now.\n"
     )?;
     barycentric_examples(&mut out)?;
     bilinear_examples(&mut out)?;
+    scanline_example(&mut out)?;
     kettner_summary(&mut out)?;
     writeln!(
         out,
@@ -266,6 +271,75 @@ fn bilinear_examples(out: &mut impl Write) -> Result {
             inverse,
             vs_given,
             vs_newton
+        )?;
+    }
+    writeln!(out)?;
+    Ok(())
+}
+
+/// Schaefer's worked example: the triangle A = (0, 0), B = (1, 5), C = (4, 2) filled by the
+/// scanline backend (Edge Table, Active Edge List) at integer points, carrying F = the
+/// barycentric weights of A, B and C (1 at its vertex, 0 at the others) along the edges and the
+/// spans, in exact rationals; each point's F is checked against its exact barycentric
+/// coordinates.
+fn scanline_example(out: &mut impl Write) -> Result {
+    let corners = [(0, 0), (1, 5), (4, 2)];
+    let tri_q = corners.map(|(x, y)| [Q::int(x), Q::int(y)]);
+    let unit = |k: usize| core::array::from_fn(|i| Q::int(i64::from(i == k)));
+    let polygon: Vec<ScanVertex<Q, 3>> = corners
+        .iter()
+        .enumerate()
+        .map(|(k, &(x, y))| ScanVertex {
+            x: Q::int(x),
+            y: Q::int(y),
+            f: unit(k),
+        })
+        .collect();
+    let mut covered: Vec<(i64, i64, [Q; 3])> = Vec::new();
+    scanline_fill(
+        &polygon,
+        SampleRule::IntegerPoints,
+        (-1, 7),
+        (-1, 6),
+        |x, y, f| covered.push((x, y, f)),
+    );
+    writeln!(
+        out,
+        "Schaefer's scanline example (Shading/Texturing slides): the triangle A = (0, 0), \
+         B = (1, 5), C = (4, 2) filled by\nbarytex_raster::scanline::scanline_fill (Edge Table, \
+         Active Edge List) at the integer points (x, y), y down; a point on a\nleft or top edge \
+         is in, on a right or bottom edge out. F = (α, β, γ), the weights of A, B, C, is \
+         interpolated\nalong the edges and across each span in exact rationals, and checked \
+         against each point's exact barycentric\ncoordinates."
+    )?;
+    let mut rows: Vec<(i64, i64, i64)> = Vec::new();
+    for &(x, y, _) in &covered {
+        match rows.last_mut() {
+            Some((row, _, last)) if *row == y && *last + 1 == x => *last = x,
+            _ => rows.push((y, x, x)),
+        }
+    }
+    for (y, first, last) in rows {
+        if first == last {
+            writeln!(out, "  span y = {y}: x = {first}")?;
+        } else {
+            writeln!(out, "  span y = {y}: x = {first} to {last}")?;
+        }
+    }
+    writeln!(out, "  {:<8} {:<20} exact", "(x, y)", "F = (α, β, γ)")?;
+    for (x, y, f) in &covered {
+        let exact = exact::barycentric([Q::int(*x), Q::int(*y)], tri_q)
+            .ok_or("degenerate example triangle")?;
+        let check = if exact == *f {
+            "✓".to_owned()
+        } else {
+            format!("✗ {}", show_q3(&exact))
+        };
+        writeln!(
+            out,
+            "  {:<8} {:<20} {check}",
+            format!("({x}, {y})"),
+            show_q3(f)
         )?;
     }
     writeln!(out)?;

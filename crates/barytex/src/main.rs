@@ -4,14 +4,16 @@
 //!   `barytex-demo.png` and prints where it went and how long each stage took (`barytex demo`
 //!   takes the render options).
 //! - `barytex render FILE [--scene N] [--camera N|auto] [--size WxH] [--shading unlit|phong]
-//!   [--filter …] [--aa …] [--threads N] [-o OUT.png] [--print-camera] [--stats]
-//!   [--allow-dir DIR]…`: a glTF/GLB (its URIs read only files under its folder and each DIR).
+//!   [--filter …] [--aa …] [--background COLOUR] [--threads N] [-o OUT.png] [--print-camera]
+//!   [--stats] [--allow-dir DIR]…`: a glTF/GLB (its URIs read only files under its folder and
+//!   each DIR). `--camera N` is the document's `cameras[N]`; `--list-cameras` lists them and
+//!   where the scene places them, and renders nothing.
 //! - `barytex examples`: the worked examples of Buss, *3D Computer Graphics* (2003), ch. IV,
-//!   checked against exact arithmetic.
+//!   and Schaefer's scanline triangle, checked against exact arithmetic.
 //! - `barytex uv-layout FILE [--scene N] [--size N] [-o DIR] [--allow-dir DIR]…`: the uv layout
 //!   of every textured primitive over its texture (default folder `<file stem>-uv-layout`).
 //! - `barytex uv-layout --mesh sphere|equal-area-sphere|torus|cylinder|cube|plane [--size N]
-//!   [-o FILE.png]`: a parametric mesh's uv layout (default `docs/uv-layout/<mesh>.png`).
+//!   [-o FILE.png]`: a parametric mesh's uv layout (default `<mesh>.png` in the current folder).
 //!
 //! The speed-vs-error report (`docs/report/`) is the workspace tool `barytex-report`
 //! (`cargo run --release -p barytex-report`), not a subcommand: it measures against test
@@ -44,10 +46,20 @@ struct RenderArgs {
     /// Image size, WIDTHxHEIGHT.
     #[arg(long, default_value = "960x540", value_parser = render_cmd::parse_size)]
     size: (u32, u32),
-    /// `auto` (the documented automatic camera) or a camera index; default: the scene's first
-    /// camera, else auto.
+    /// `auto` (the documented automatic camera) or N, the file's camera N (glTF `cameras[N]`,
+    /// where the first node of the scene that uses it places it; --list-cameras lists them);
+    /// default: the first camera the scene places, else auto.
     #[arg(long, value_parser = render_cmd::parse_camera)]
     camera: Option<barytex_render::CameraChoice>,
+    /// Print the file's cameras (index, name, projection, which node of the scene places each
+    /// and where) and exit without rendering.
+    #[arg(long)]
+    list_cameras: bool,
+    /// The colour where nothing is drawn, sRGB: `#rrggbb`, `#rrggbbaa` or `r,g,b[,a]` with
+    /// each 0 to 255; alpha below 255 is kept in the PNG (`#00000000`: transparent, so alpha
+    /// is the coverage). Fog fades to it. Default: `#76767c`, opaque.
+    #[arg(long, value_name = "COLOUR", allow_hyphen_values = true)]
+    background: Option<String>,
     /// unlit (glTF's unlit model: base colour × texture × vertex colour), flat, gouraud,
     /// phong, or hybrid (Gouraud, and Phong on triangles the highlight test picks).
     #[arg(long, default_value = "phong", value_parser = render_cmd::parse_shading)]
@@ -112,6 +124,8 @@ impl RenderArgs {
         Self {
             size: (demo.width, demo.height),
             camera: None,
+            list_cameras: false,
+            background: None,
             shading: demo.shading,
             filter: Some(demo.filter),
             aa: Some(demo.anti_aliasing),
@@ -128,9 +142,12 @@ impl RenderArgs {
         scene: Option<usize>,
         allowed_roots: Vec<PathBuf>,
         out: PathBuf,
-    ) -> render_cmd::Options {
-        let background = barytex_render::RenderOptions::default().background;
-        render_cmd::Options {
+    ) -> Result<render_cmd::Options, String> {
+        let background = match &self.background {
+            Some(text) => render_cmd::parse_background(text)?,
+            None => barytex_render::RenderOptions::default().background,
+        };
+        Ok(render_cmd::Options {
             file,
             scene,
             allowed_roots,
@@ -155,8 +172,9 @@ impl RenderArgs {
             threads: self.threads,
             out,
             print_camera: self.print_camera,
+            list_cameras: self.list_cameras,
             stats: self.stats,
-        }
+        })
     }
 }
 
@@ -167,8 +185,8 @@ enum Command {
     Demo(DemoArgs),
     /// Render a glTF 2.0 or GLB file to a PNG.
     Render(RenderFileArgs),
-    /// Print the worked examples of Buss, 3D Computer Graphics (2003), ch. IV, checked against
-    /// exact arithmetic.
+    /// Print the worked examples of Buss, 3D Computer Graphics (2003), ch. IV, and Schaefer's
+    /// scanline triangle, checked against exact arithmetic.
     Examples,
     /// Moved to the workspace tool `barytex-report`; says how to run it.
     #[command(hide = true, disable_help_flag = true)]
@@ -203,8 +221,8 @@ struct UvLayoutArgs {
     /// Picture side in pixels (1 to 8192).
     #[arg(long, default_value_t = 512)]
     size: u32,
-    /// With `--mesh`, the PNG to write (default `docs/uv-layout/<mesh>.png`); with a file, the
-    /// folder for its pictures (default `<file stem>-uv-layout`).
+    /// With `--mesh`, the PNG to write (default `<mesh>.png` in the current folder); with a
+    /// file, the folder for its pictures (default `<file stem>-uv-layout`).
     #[arg(short, long)]
     out: Option<PathBuf>,
 }
@@ -246,12 +264,10 @@ fn main() -> ExitCode {
     quiet_on_closed_stdout();
     let cli = Cli::parse();
     let result = match cli.command {
-        None => render_cmd::run(&RenderArgs::demo_defaults().options(
-            None,
-            None,
-            Vec::new(),
-            PathBuf::from("barytex-demo.png"),
-        )),
+        None => RenderArgs::demo_defaults()
+            .options(None, None, Vec::new(), PathBuf::from("barytex-demo.png"))
+            .map_err(Into::into)
+            .and_then(|options| render_cmd::run(&options)),
         Some(Command::Demo(args)) => {
             let defaults = RenderArgs::demo_defaults();
             let render = RenderArgs {
@@ -260,14 +276,16 @@ fn main() -> ExitCode {
                 fog: args.render.fog.or(defaults.fog),
                 ..args.render
             };
-            render_cmd::run(&render.options(None, None, Vec::new(), args.out))
+            render
+                .options(None, None, Vec::new(), args.out)
+                .map_err(Into::into)
+                .and_then(|options| render_cmd::run(&options))
         }
-        Some(Command::Render(args)) => render_cmd::run(&args.render.options(
-            Some(args.file),
-            args.scene,
-            args.allow_dir,
-            args.out,
-        )),
+        Some(Command::Render(args)) => args
+            .render
+            .options(Some(args.file), args.scene, args.allow_dir, args.out)
+            .map_err(Into::into)
+            .and_then(|options| render_cmd::run(&options)),
         Some(Command::Examples) => examples::run(),
         Some(Command::Report { args }) => Err(report_moved(&args).into()),
         Some(Command::UvLayout(args)) => {

@@ -4,11 +4,12 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use barytex_gltf::{LoadOptions, Scene, load_path};
+use barytex_gltf::{LoadOptions, Projection, Scene, load_path};
 use barytex_render::{
     AntiAliasing, CameraChoice, Filter, RenderOptions, RenderStats, Rendered, Shading,
     render_with_progress,
 };
+use glam::{Vec3, Vec4};
 
 /// What to render and how.
 #[derive(Clone, Debug)]
@@ -27,6 +28,8 @@ pub(crate) struct Options {
     pub(crate) out: PathBuf,
     /// Print the camera's matrices.
     pub(crate) print_camera: bool,
+    /// List the cameras instead of rendering.
+    pub(crate) list_cameras: bool,
     /// Print the render statistics.
     pub(crate) stats: bool,
 }
@@ -70,6 +73,43 @@ pub(crate) fn parse_camera(text: &str) -> Result<CameraChoice, String> {
     text.parse()
         .map(CameraChoice::Index)
         .map_err(|_| format!("camera `{text}`: expected `auto` or a camera index"))
+}
+
+/// An sRGB colour, `#rrggbb`, `#rrggbbaa` or `r,g,b[,a]` (each 0 to 255; alpha 255 when
+/// absent), as the renderer takes it: linear light (IEC 61966-2-1's transfer function) and
+/// straight alpha.
+pub(crate) fn parse_background(text: &str) -> Result<Vec4, String> {
+    let bytes: Option<Vec<u8>> = match text.trim().strip_prefix('#') {
+        Some(hex)
+            if (hex.len() == 6 || hex.len() == 8) && hex.bytes().all(|b| b.is_ascii_hexdigit()) =>
+        {
+            (0..hex.len())
+                .step_by(2)
+                .map(|i| u8::from_str_radix(&hex[i..i + 2], 16).ok())
+                .collect()
+        }
+        Some(_) => None,
+        None => text
+            .split(',')
+            .map(|part| {
+                let part = part.trim();
+                let digits = !part.is_empty() && part.bytes().all(|b| b.is_ascii_digit());
+                part.parse::<u8>().ok().filter(|_| digits)
+            })
+            .collect(),
+    };
+    match bytes.as_deref() {
+        Some(&[r, g, b]) => Ok((r, g, b, 255)),
+        Some(&[r, g, b, a]) => Ok((r, g, b, a)),
+        _ => Err(format!(
+            "background `{}`: expected #rrggbb, #rrggbbaa or r,g,b[,a] with each 0 to 255",
+            text.escape_debug()
+        )),
+    }
+    .map(|(r, g, b, a)| {
+        use barytex_texture::srgb::decode;
+        Vec4::new(decode(r), decode(g), decode(b), f32::from(a) / 255.0)
+    })
 }
 
 fn number_after(
@@ -300,24 +340,125 @@ impl Drop for Progress {
     }
 }
 
+/// What is rendered, for messages: the file, or the demo scene.
+fn what(options: &Options) -> String {
+    options.file.as_ref().map_or_else(
+        || "the built-in demo scene".to_owned(),
+        |p| p.display().to_string(),
+    )
+}
+
+/// `(x, y, z)` with Rust's shortest round-trip formatting.
+fn point(p: Vec3) -> String {
+    format!("({}, {}, {})", p.x, p.y, p.z)
+}
+
+/// A projection's parameters as glTF names them (glTF 2.0 §5.12–5.14).
+fn describe_projection(projection: &Projection) -> String {
+    match *projection {
+        Projection::Perspective {
+            yfov,
+            aspect_ratio,
+            znear,
+            zfar,
+        } => format!(
+            "perspective, yfov {yfov} rad, aspect ratio {}, znear {znear}, zfar {}",
+            aspect_ratio.map_or_else(|| "of the image".to_owned(), |a| a.to_string()),
+            zfar.map_or_else(|| "infinite".to_owned(), |f| f.to_string())
+        ),
+        Projection::Orthographic {
+            xmag,
+            ymag,
+            znear,
+            zfar,
+        } => format!("orthographic, xmag {xmag}, ymag {ymag}, znear {znear}, zfar {zfar}"),
+    }
+}
+
+/// `--list-cameras`: a heading, then one line per camera of the document (glTF `cameras[i]`,
+/// what `--camera i` picks): its name, projection, and the node of the scene that places it
+/// (the first in depth-first scene order; later ones are listed after "also by"), with the eye
+/// there; then the camera a render without `--camera` uses.
+fn list_cameras(what: &str, scene: &Scene) -> String {
+    use std::fmt::Write;
+    let scene_name = scene.scene_index.map_or_else(
+        || "the scene (every root node)".to_owned(),
+        |i| format!("scene {i}"),
+    );
+    let count = scene.document_cameras.len();
+    let mut text = format!(
+        "{what}: {count} camera{} in the document; where {scene_name} places them:\n",
+        if count == 1 { "" } else { "s" }
+    );
+    for (index, camera) in scene.document_cameras.iter().enumerate() {
+        let name = camera
+            .name
+            .as_ref()
+            .map_or_else(|| "(unnamed)".to_owned(), |n| format!("{n:?}"));
+        let _ = write!(
+            text,
+            "camera {index} {name}: {}; ",
+            describe_projection(&camera.projection)
+        );
+        let mut placements = scene.cameras.iter().filter(|c| c.camera == index);
+        match placements.next() {
+            Some(first) => {
+                let _ = write!(
+                    text,
+                    "placed by node {}, eye at {}",
+                    first.node,
+                    point(first.world.transform_point3(Vec3::ZERO))
+                );
+                let others: Vec<String> = placements.map(|c| c.node.to_string()).collect();
+                if !others.is_empty() {
+                    let _ = write!(text, "; also by node {}", others.join(", "));
+                }
+            }
+            None => {
+                let _ = write!(text, "not placed by {scene_name}");
+            }
+        }
+        text.push('\n');
+    }
+    match scene.cameras.first() {
+        Some(first) => {
+            let _ = writeln!(
+                text,
+                "default: camera {} (the first the scene places; --camera auto for the \
+                 automatic camera)",
+                first.camera
+            );
+        }
+        None => text.push_str("default: the automatic camera (the scene places no camera)\n"),
+    }
+    text
+}
+
 /// Loads or builds the scene, renders it, writes the PNG.
 pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(options.threads.unwrap_or(0))
         .build()?;
-    let what = options.file.as_ref().map_or_else(
-        || "the built-in demo scene".to_owned(),
-        |p| p.display().to_string(),
-    );
-    println!(
-        "rendering {what} at {}×{} on {} thread(s)",
-        options.render.width,
-        options.render.height,
-        pool.current_num_threads()
-    );
+    if options.list_cameras {
+        let (scene, _) = load(options)?;
+        print!("{}", list_cameras(&what(options), &scene));
+        return Ok(());
+    }
     let progress = Progress::start();
     progress.stage("loading");
+    // Loaded, and the camera checked, before the render is announced: a missing or invalid file
+    // or a camera the scene lacks is one error line.
     let (scene, load_seconds) = load(options)?;
+    barytex_render::choose_camera(&scene, &options.render)?;
+    progress.0.suspend(|| {
+        println!(
+            "rendering {} at {}×{} on {} thread(s)",
+            what(options),
+            options.render.width,
+            options.render.height,
+            pool.current_num_threads()
+        );
+    });
     progress.stage("rendering");
     let render_options = RenderOptions {
         measure_stages: options.stats,
@@ -410,6 +551,45 @@ mod tests {
         assert_eq!(parse_fog("0.04"), Ok(0.04));
         for bad in ["-1", "nan", "inf", "thick"] {
             assert!(parse_fog(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn backgrounds_parse_and_refuse() {
+        use barytex_texture::srgb::decode;
+        let grey = Vec4::new(decode(0x76), decode(0x76), decode(0x7c), 1.0);
+        assert_eq!(parse_background("#76767c"), Ok(grey));
+        assert_eq!(parse_background("#76767CFF"), Ok(grey));
+        assert_eq!(parse_background("118, 118,124"), Ok(grey));
+        assert_eq!(parse_background("#00000000"), Ok(Vec4::ZERO));
+        assert_eq!(parse_background("0,0,0,0"), Ok(Vec4::ZERO));
+        assert_eq!(
+            parse_background("255,0,0,51"),
+            Ok(Vec4::new(1.0, 0.0, 0.0, 0.2))
+        );
+        for bad in [
+            "#12345",
+            "#1234567",
+            "#gg0000",
+            "#+1+2+3",
+            "123456",
+            "256,0,0",
+            "+1,0,0",
+            "1,2",
+            "1,2,3,4,5",
+            "-1,0,0",
+            "1.5,0,0",
+            "1,,2",
+            "red",
+            "",
+            "#",
+            "#ééé",
+        ] {
+            let Err(error) = parse_background(bad) else {
+                panic!("{bad} was accepted");
+            };
+            assert!(error.starts_with("background `"), "{bad}: {error}");
+            assert_eq!(error.lines().count(), 1, "{bad}: {error}");
         }
     }
 

@@ -96,7 +96,8 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     }
 }
 
-/// Draws a parametric mesh and writes it (default `docs/uv-layout/<mesh>.png`).
+/// Draws a parametric mesh and writes it (default `<mesh>.png` in the current folder, as
+/// `render` writes `barytex-render.png` there).
 fn run_mesh(
     kind: MeshKind,
     size: u32,
@@ -104,7 +105,7 @@ fn run_mesh(
 ) -> Result<(), Box<dyn std::error::Error>> {
     let mesh = kind.build()?;
     let picture = draw_uv_layout(&mesh, size, &LayoutOptions::default())?;
-    let out = out.unwrap_or_else(|| PathBuf::from(format!("docs/uv-layout/{}.png", kind.name())));
+    let out = out.unwrap_or_else(|| PathBuf::from(format!("{}.png", kind.name())));
     if let Some(parent) = out.parent().filter(|p| !p.as_os_str().is_empty()) {
         std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
     }

@@ -25,6 +25,34 @@ fn examples_prints_the_worked_examples() {
         "{stdout}"
     );
     assert!(stdout.contains("Example 10"), "{stdout}");
+    // Schaefer's scanline triangle A = (0, 0), B = (1, 5), C = (4, 2): the covered integer
+    // points row by row, each with its exact weights (α, β, γ) of A, B, C.
+    assert!(stdout.contains("Schaefer"), "{stdout}");
+    for (point, weights) in [
+        ("(1, 1)", "(2/3, 1/9, 2/9)"),
+        ("(1, 2)", "(1/2, 1/3, 1/6)"),
+        ("(2, 2)", "(1/3, 2/9, 4/9)"),
+        ("(3, 2)", "(1/6, 1/9, 13/18)"),
+        ("(1, 3)", "(1/3, 5/9, 1/9)"),
+        ("(2, 3)", "(1/6, 4/9, 7/18)"),
+        ("(1, 4)", "(1/6, 7/9, 1/18)"),
+    ] {
+        assert!(
+            stdout
+                .lines()
+                .any(|l| l.trim_start().starts_with(point) && l.contains(weights)),
+            "no {point} {weights} row in:\n{stdout}"
+        );
+    }
+    for span in [
+        "y = 1: x = 1",
+        "y = 2: x = 1 to 3",
+        "y = 3: x = 1 to 2",
+        "y = 4: x = 1",
+    ] {
+        assert!(stdout.contains(span), "no span `{span}` in:\n{stdout}");
+    }
+    assert!(!stdout.contains("does not exist yet"), "{stdout}");
     assert!(stdout.contains("Kettner"), "{stdout}");
     assert!(
         stdout.contains("cargo run --release -p barytex-report"),
@@ -91,6 +119,27 @@ fn uv_layout_writes_a_png_of_the_requested_size() {
         .unwrap();
     assert!(!refused.status.success());
     assert!(String::from_utf8_lossy(&refused.stderr).contains("out of range"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `uv-layout --mesh X` without `-o` writes `X.png` into the current folder, as `render` writes
+/// `barytex-render.png` there, and creates no folder.
+#[test]
+fn uv_layout_mesh_writes_into_the_current_folder() {
+    let dir = temp_dir("uv-layout-cwd");
+    std::fs::create_dir_all(&dir).unwrap();
+    let output = barytex()
+        .current_dir(&dir)
+        .args(["uv-layout", "--mesh", "plane", "--size", "16"])
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{output:?}");
+    assert!(dir.join("plane.png").is_file(), "{output:?}");
+    let entries: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(entries, ["plane.png"], "nothing else is created");
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -346,6 +395,15 @@ fn render_refuses_bad_files_scenes_and_outputs() {
         "no-such-file.gltf",
     );
     assert!(line.contains("cannot read"), "{line}");
+    // The input is checked before the render is announced.
+    let output = barytex()
+        .arg("render")
+        .arg(&missing)
+        .arg("-o")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(output.stdout.is_empty(), "{output:?}");
 
     let text = dir.join("notes.gltf");
     std::fs::write(&text, "these are not the droids you are looking for\n").unwrap();
