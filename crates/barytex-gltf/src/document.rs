@@ -686,14 +686,20 @@ impl Document {
         }
 
         let mut decode_seconds = 0.0;
-        // Images: every one checked; decoded only where a used material samples it.
+        // Images: decoded only where a used material samples them in a role the caller reads.
+        // Images sampled only in other roles are checked, and an error there is a warning.
         let mut wanted: BTreeSet<(usize, bool)> = BTreeSet::new();
+        let mut unread: BTreeSet<usize> = BTreeSet::new();
         for mesh in decoded.iter().flatten() {
             for p in &mesh.primitives {
                 if let Some(mat) = p.material.and_then(|i| self.materials.get(i)) {
-                    for (t, cs) in mat.texture_refs() {
+                    for (role, t, cs) in mat.texture_roles() {
                         if let Some(image) = t.image {
-                            wanted.insert((image, cs == ColorSpace::Srgb));
+                            if options.image_roles.contains(role) {
+                                wanted.insert((image, cs == ColorSpace::Srgb));
+                            } else {
+                                unread.insert(image);
+                            }
                         }
                     }
                 }
@@ -709,18 +715,39 @@ impl Document {
                 name: def.name.clone(),
                 ..SceneImage::default()
             };
-            let bytes = def.bytes(&reader, source, limits)?;
+            let wants_srgb = wanted.contains(&(i, true));
+            let wants_linear = wanted.contains(&(i, false));
+            let checked = def.bytes(&reader, source, limits).and_then(|bytes| {
+                match &bytes {
+                    Some(b) => def.check_bytes(b),
+                    None => Ok(None),
+                }
+                .map(|warning| (bytes, warning))
+            });
+            let bytes = match checked {
+                Ok((bytes, warning)) => {
+                    warnings.extend(warning);
+                    bytes
+                }
+                // Sampled only in roles the caller does not read: not needed. (An image no
+                // material samples stays required, as the glTF-Validator requires it.)
+                Err(e) if !(wants_srgb || wants_linear) && unread.contains(&i) => {
+                    warnings.push(format!(
+                        "{}: image not usable, and not needed: {e}",
+                        def.ptr
+                    ));
+                    stats.images_skipped += 1;
+                    images.push(slot);
+                    continue;
+                }
+                Err(e) => return Err(e),
+            };
             let Some(bytes) = bytes else {
                 warnings.push(format!("{}: non-relative image URI not fetched", def.ptr));
                 stats.images_skipped += 1;
                 images.push(slot);
                 continue;
             };
-            if let Some(w) = def.check_bytes(&bytes)? {
-                warnings.push(w);
-            }
-            let wants_srgb = wanted.contains(&(i, true));
-            let wants_linear = wanted.contains(&(i, false));
             if !(wants_srgb || wants_linear) || !options.decode_images {
                 stats.images_skipped += 1;
             }

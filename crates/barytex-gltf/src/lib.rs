@@ -78,7 +78,7 @@ pub use camera::{DocumentCamera, Projection, SceneCamera};
 pub use error::SceneError;
 pub use light::{LightKind, PunctualLight, SceneLight};
 pub use limits::SceneLimits;
-pub use material::{AlphaMode, Material, TextureRef};
+pub use material::{AlphaMode, Material, TextureRef, TextureRole, TextureRoles};
 pub use mesh::{Mesh, Primitive};
 pub use sampler::{MagFilter, MinFilter, SamplerParams, Wrap};
 pub use scene::{MeshInstance, Scene, SceneImage, SceneStats, Texture};
@@ -108,6 +108,11 @@ pub struct LoadOptions {
     /// Whether to decode the images the scene's materials sample (their bytes are checked
     /// either way).
     pub decode_images: bool,
+    /// Which textures the caller will sample (all by default). Images that the scene's
+    /// materials sample only in the other roles are neither decoded nor required: one that is
+    /// missing or broken is a warning, not an error — a renderer drawing unlit never reads
+    /// normal or metallic-roughness maps. (An image no material samples is checked as always.)
+    pub image_roles: TextureRoles,
     /// Folders besides the model's own that its relative URIs may reach (e.g. a shared
     /// textures folder beside the model's). Empty by default: a document reads only files under
     /// its own folder. A root that does not exist allows nothing.
@@ -120,6 +125,7 @@ impl Default for LoadOptions {
             limits: SceneLimits::default(),
             scene: None,
             decode_images: true,
+            image_roles: TextureRoles::ALL,
             allowed_roots: Vec::new(),
         }
     }

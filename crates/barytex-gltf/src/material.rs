@@ -41,6 +41,76 @@ pub struct TextureRef {
     pub mapping: TexCoordMapping,
 }
 
+/// The part a texture plays in a metallic-roughness material (glTF 2.0 §3.9.2–§3.9.3).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TextureRole {
+    /// `pbrMetallicRoughness.baseColorTexture` (sRGB).
+    BaseColor,
+    /// `emissiveTexture` (sRGB).
+    Emissive,
+    /// `pbrMetallicRoughness.metallicRoughnessTexture` (linear).
+    MetallicRoughness,
+    /// `normalTexture` (linear).
+    Normal,
+    /// `occlusionTexture` (linear).
+    Occlusion,
+}
+
+impl TextureRole {
+    /// Every role.
+    pub const ALL: [Self; 5] = [
+        Self::BaseColor,
+        Self::Emissive,
+        Self::MetallicRoughness,
+        Self::Normal,
+        Self::Occlusion,
+    ];
+}
+
+/// A set of [`TextureRole`]s: which textures a loader decodes
+/// ([`LoadOptions::image_roles`](crate::LoadOptions::image_roles)).
+///
+/// ```
+/// use barytex_gltf::{TextureRole, TextureRoles};
+///
+/// let unlit = TextureRoles::NONE.with(TextureRole::BaseColor);
+/// assert!(unlit.contains(TextureRole::BaseColor));
+/// assert!(!unlit.contains(TextureRole::Normal));
+/// assert!(TextureRoles::ALL.contains(TextureRole::Normal));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct TextureRoles(u8);
+
+impl TextureRoles {
+    /// No texture.
+    pub const NONE: Self = Self(0);
+    /// Every texture.
+    pub const ALL: Self = Self(0b1_1111);
+
+    const fn bit(role: TextureRole) -> u8 {
+        1 << (role as u8)
+    }
+
+    /// This set with `role` added.
+    #[must_use]
+    pub const fn with(self, role: TextureRole) -> Self {
+        Self(self.0 | Self::bit(role))
+    }
+
+    /// Whether `role` is in the set.
+    #[must_use]
+    pub const fn contains(self, role: TextureRole) -> bool {
+        self.0 & Self::bit(role) != 0
+    }
+}
+
+impl Default for TextureRoles {
+    /// Every texture.
+    fn default() -> Self {
+        Self::ALL
+    }
+}
+
 /// A material, with the specification's defaults filled in.
 ///
 /// ```
@@ -137,16 +207,39 @@ impl Material {
     /// ```
     #[must_use]
     pub fn texture_refs(&self) -> Vec<(TextureRef, barytex_texture::load::ColorSpace)> {
+        self.texture_roles()
+            .into_iter()
+            .map(|(_, t, cs)| (t, cs))
+            .collect()
+    }
+
+    /// The texture references with the role each plays and the colour space it is decoded in,
+    /// in [`texture_refs`](Self::texture_refs)' order.
+    ///
+    /// ```
+    /// use barytex_gltf::{Material, TextureRole};
+    ///
+    /// assert!(Material::default().texture_roles().is_empty());
+    /// assert_eq!(TextureRole::ALL.len(), 5);
+    /// ```
+    #[must_use]
+    pub fn texture_roles(
+        &self,
+    ) -> Vec<(TextureRole, TextureRef, barytex_texture::load::ColorSpace)> {
         use barytex_texture::load::ColorSpace::{Linear, Srgb};
         [
-            (self.base_color_texture, Srgb),
-            (self.emissive_texture, Srgb),
-            (self.metallic_roughness_texture, Linear),
-            (self.normal_texture, Linear),
-            (self.occlusion_texture, Linear),
+            (TextureRole::BaseColor, self.base_color_texture, Srgb),
+            (TextureRole::Emissive, self.emissive_texture, Srgb),
+            (
+                TextureRole::MetallicRoughness,
+                self.metallic_roughness_texture,
+                Linear,
+            ),
+            (TextureRole::Normal, self.normal_texture, Linear),
+            (TextureRole::Occlusion, self.occlusion_texture, Linear),
         ]
         .into_iter()
-        .filter_map(|(t, cs)| t.map(|t| (t, cs)))
+        .filter_map(|(role, t, cs)| t.map(|t| (role, t, cs)))
         .collect()
     }
 

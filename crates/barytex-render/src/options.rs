@@ -1,6 +1,6 @@
 //! What a render is asked to do: size, camera, shading, texture filter, anti-aliasing.
 
-use barytex_gltf::SamplerParams;
+use barytex_gltf::{SamplerParams, TextureRole, TextureRoles};
 use barytex_texture::sampler::{
     AnisotropicFilter, FilterMode, MipmapFilterMode, SamplerDescriptor,
 };
@@ -42,6 +42,34 @@ pub enum Shading {
     /// `barytex_shade::HighlightTest`, whose crate documentation cites its source) finds a visible
     /// specular highlight: those get Phong.
     Hybrid,
+}
+
+impl Shading {
+    /// The textures this shading samples: the base colour only when unlit; no normal maps
+    /// under flat and Gouraud shading (they show only per pixel); every texture otherwise.
+    /// A loader given these ([`barytex_gltf::LoadOptions::image_roles`]) decodes nothing else.
+    ///
+    /// ```
+    /// use barytex_gltf::TextureRole;
+    /// use barytex_render::Shading;
+    ///
+    /// assert!(!Shading::Unlit.texture_roles().contains(TextureRole::Emissive));
+    /// assert!(!Shading::Gouraud.texture_roles().contains(TextureRole::Normal));
+    /// assert!(Shading::Phong.texture_roles().contains(TextureRole::Normal));
+    /// ```
+    #[must_use]
+    pub fn texture_roles(self) -> TextureRoles {
+        let lit = TextureRoles::NONE
+            .with(TextureRole::BaseColor)
+            .with(TextureRole::Emissive)
+            .with(TextureRole::MetallicRoughness)
+            .with(TextureRole::Occlusion);
+        match self {
+            Self::Unlit => TextureRoles::NONE.with(TextureRole::BaseColor),
+            Self::Flat | Self::Gouraud => lit,
+            Self::Phong | Self::Hybrid => lit.with(TextureRole::Normal),
+        }
+    }
 }
 
 /// The texture filter, overriding the files' samplers (their wrap modes stay).

@@ -208,6 +208,8 @@ fn load(options: &Options) -> Result<(Scene, f64), Box<dyn std::error::Error>> {
             &LoadOptions {
                 scene: options.scene,
                 allowed_roots: options.allowed_roots.clone(),
+                // Decode (and require) only the textures this shading reads.
+                image_roles: options.render.shading.texture_roles(),
                 ..LoadOptions::default()
             },
         )

@@ -621,3 +621,54 @@ fn render_refuses_more_than_1024_threads() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `--shading unlit` reads base colours only: a normal map whose file is missing does not refuse
+/// the model (it did, before the loader was told which textures the shading reads), while
+/// `--shading phong`, which samples it, still does.
+#[test]
+fn unlit_renders_need_no_normal_map() {
+    let dir = temp_dir("unlit-roles");
+    std::fs::create_dir_all(&dir).unwrap();
+    let positions: Vec<u8> = [0.0_f32, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]
+        .iter()
+        .flat_map(|v| v.to_le_bytes())
+        .collect();
+    std::fs::write(dir.join("tri.bin"), positions).unwrap();
+    let gltf = dir.join("tri.gltf");
+    std::fs::write(
+        &gltf,
+        r#"{"asset":{"version":"2.0"},
+            "buffers":[{"byteLength":36,"uri":"tri.bin"}],
+            "bufferViews":[{"buffer":0,"byteLength":36}],
+            "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},
+                         {"componentType":5126,"count":3,"type":"VEC2"},
+                         {"componentType":5126,"count":3,"type":"VEC3"},
+                         {"componentType":5126,"count":3,"type":"VEC4"}],
+            "images":[{"uri":"missing-normals.png"}],
+            "textures":[{"source":0}],
+            "materials":[{"normalTexture":{"index":0}}],
+            "meshes":[{"primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1,"NORMAL":2,"TANGENT":3},"material":0}]}],
+            "nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]}"#,
+    )
+    .unwrap();
+    let out = dir.join("out.png");
+    let run = |shading: &str| {
+        barytex()
+            .arg("render")
+            .arg(&gltf)
+            .args(["--size", "8x6", "--shading", shading, "-o"])
+            .arg(&out)
+            .output()
+            .unwrap()
+    };
+    let unlit = run("unlit");
+    assert!(
+        unlit.status.success(),
+        "{}",
+        String::from_utf8_lossy(&unlit.stderr)
+    );
+    let phong = run("phong");
+    assert!(!phong.status.success());
+    assert!(String::from_utf8_lossy(&phong.stderr).contains("missing-normals.png"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
