@@ -16,8 +16,12 @@ use std::process::ExitCode;
 use clap::Parser;
 
 /// Measure every method's speed and error on the same inputs and write the Markdown report.
+///
+/// Writes into OUT: README.md (the index), interp.md (interpolation math), texture.md (texture
+/// filters, with texture-filters-grazing.png), raster.md (rasterization), shading.md (shading
+/// frequencies), and one speed-vs-error chart (SVG) per table.
 #[derive(Debug, Parser)]
-#[command(name = "barytex-report", version, about, long_about = None)]
+#[command(name = "barytex-report", version, about, long_about)]
 struct Cli {
     /// Directory for README.md and the report pages (created if missing).
     #[arg(long, default_value = "docs/report")]

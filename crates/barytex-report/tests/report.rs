@@ -203,3 +203,22 @@ fn quick_report_writes_and_links_the_charts() {
     assert!(shading.contains(">time per frame (ns)</text>"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `--help` names every page the report writes.
+#[test]
+fn help_lists_every_page() {
+    let output = barytex_report().arg("--help").output().unwrap();
+    assert!(output.status.success());
+    let help = String::from_utf8_lossy(&output.stdout);
+    for page in [
+        "README.md",
+        "interp.md",
+        "texture.md",
+        "raster.md",
+        "shading.md",
+        "texture-filters-grazing.png",
+        "SVG",
+    ] {
+        assert!(help.contains(page), "{page} missing from:\n{help}");
+    }
+}
