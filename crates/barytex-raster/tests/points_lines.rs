@@ -319,3 +319,101 @@ fn lines_are_clipped_at_the_near_plane() {
     );
     assert_eq!((stats.clipped_away, stats.fragments_shaded), (1, 0));
 }
+
+#[test]
+fn hostile_points_and_lines_are_dropped_and_counted_never_written_outside() {
+    let v = [
+        (Vec4::new(f32::NAN, 0.0, 0.5, 1.0), 0.0),
+        (Vec4::new(1e30, -1e30, 0.5, 1.0), 0.0), // far outside: the guard band clips it
+        (Vec4::new(0.0, 0.0, 0.0, 0.0), 0.0),    // w = 0
+        (Vec4::new(0.3, 0.2, -2.0, -1.0), 0.0),  // behind the eye
+        (Vec4::new(0.1, 0.1, 0.5, 1.0), 0.0),
+        (Vec4::new(f32::MAX, f32::MAX, f32::MAX, f32::MAX), 0.0),
+    ];
+    let all: Vec<u32> = (0..6).chain([99]).collect();
+    // Every ordered pair, and one with a bad index.
+    let pairs: Vec<u32> = (0..6)
+        .flat_map(|a| (0..6).flat_map(move |b| [a, b]))
+        .chain([4, 99])
+        .collect();
+    let shader = Record(Mutex::new(Vec::new()));
+    let mut fb = target();
+    let state = PipelineState {
+        scissor: Some(barytex_raster::Scissor {
+            x0: 2,
+            y0: 2,
+            x1: 6,
+            y1: 6,
+        }),
+        ..PipelineState::default()
+    };
+    let points = draw_points(&mut fb, &shader, &state, &v, &all);
+    assert_eq!(points.points_in, 7);
+    assert_eq!((points.dropped_bad_index, points.dropped_non_finite), (1, 1));
+    // The huge, w = 0 and behind-the-eye points are outside the view volume; the f32::MAX one
+    // is NDC (1, 1, 1), on the volume's corner: kept, and its square covers no pixel centre.
+    assert_eq!(points.clipped_away, 3);
+    assert_eq!(points.fragments_shaded, 1);
+    let lines = draw_lines(&mut fb, &shader, &state, &v, &pairs, LineTopology::List);
+    assert_eq!(lines.lines_in, 37);
+    assert_eq!(lines.dropped_bad_index, 1);
+    assert_eq!(lines.dropped_non_finite, 11); // every pair with the NaN vertex
+    for loop_or_strip in [LineTopology::Strip, LineTopology::Loop] {
+        draw_lines(&mut fb, &shader, &state, &v, &all, loop_or_strip);
+    }
+    for (pixel, _, _) in shader.0.into_inner().expect("not poisoned") {
+        assert!((2..6).contains(&pixel.x) && (2..6).contains(&pixel.y), "{pixel}");
+    }
+}
+
+#[test]
+fn points_and_lines_are_identical_for_any_thread_count() {
+    struct Colour;
+    impl Shader for Colour {
+        type Vertex = (Vec4, f32);
+        type Varying = f32;
+        fn vertex(&self, v: &(Vec4, f32)) -> (Vec4, f32) {
+            *v
+        }
+        fn fragment(&self, f: &Fragment<'_, f32>) -> Option<Vec4> {
+            Some(Vec4::new(f.varying, 1.0 - f.varying, 0.5, 0.5))
+        }
+    }
+    // A fan of segments and points across a 4× multisampled target, blended "over" (order
+    // dependent), at varying w.
+    let v: Vec<(Vec4, f32)> = (0..40)
+        .map(|i| {
+            let a = i as f32 * 0.7;
+            let w = 1.0 + (i % 5) as f32 * 0.5;
+            (Vec4::new(a.cos() * 0.9 * w, a.sin() * 0.8 * w, 0.3 * w, w), i as f32 / 40.0)
+        })
+        .collect();
+    let indices: Vec<u32> = (0..40).collect();
+    let run = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("a pool");
+        pool.install(|| {
+            let mut fb = Framebuffer::multisampled(
+                32,
+                32,
+                SamplePattern::Standard { count: 4 },
+                Vec4::ZERO,
+                &TargetLimits::default(),
+            )
+            .expect("small target");
+            let state = PipelineState {
+                blend: Blend::Over,
+                depth_compare: None,
+                ..PipelineState::default()
+            };
+            draw_lines(&mut fb, &Colour, &state, &v, &indices, LineTopology::Loop);
+            draw_points(&mut fb, &Colour, &state, &v, &indices);
+            fb
+        })
+    };
+    let one = run(1);
+    assert_eq!(one, run(3));
+    assert_eq!(one, run(1));
+}
