@@ -349,7 +349,10 @@ fn hostile_points_and_lines_are_dropped_and_counted_never_written_outside() {
     };
     let points = draw_points(&mut fb, &shader, &state, &v, &all);
     assert_eq!(points.points_in, 7);
-    assert_eq!((points.dropped_bad_index, points.dropped_non_finite), (1, 1));
+    assert_eq!(
+        (points.dropped_bad_index, points.dropped_non_finite),
+        (1, 1)
+    );
     // The huge, w = 0 and behind-the-eye points are outside the view volume; the f32::MAX one
     // is NDC (1, 1, 1), on the volume's corner: kept, and its square covers no pixel centre.
     assert_eq!(points.clipped_away, 3);
@@ -362,7 +365,10 @@ fn hostile_points_and_lines_are_dropped_and_counted_never_written_outside() {
         draw_lines(&mut fb, &shader, &state, &v, &all, loop_or_strip);
     }
     for (pixel, _, _) in shader.0.into_inner().expect("not poisoned") {
-        assert!((2..6).contains(&pixel.x) && (2..6).contains(&pixel.y), "{pixel}");
+        assert!(
+            (2..6).contains(&pixel.x) && (2..6).contains(&pixel.y),
+            "{pixel}"
+        );
     }
 }
 
@@ -385,7 +391,10 @@ fn points_and_lines_are_identical_for_any_thread_count() {
         .map(|i| {
             let a = i as f32 * 0.7;
             let w = 1.0 + (i % 5) as f32 * 0.5;
-            (Vec4::new(a.cos() * 0.9 * w, a.sin() * 0.8 * w, 0.3 * w, w), i as f32 / 40.0)
+            (
+                Vec4::new(a.cos() * 0.9 * w, a.sin() * 0.8 * w, 0.3 * w, w),
+                i as f32 / 40.0,
+            )
         })
         .collect();
     let indices: Vec<u32> = (0..40).collect();
