@@ -5,7 +5,7 @@
 //!   square is half-open, `[x − ½, x + ½) × [y − ½, y + ½)` in screen space (y down), so two
 //!   points one pixel apart never cover the same sample; with one sample per pixel that is the
 //!   one pixel whose centre lies in the square. A point outside the view volume
-//!   (`−w ≤ x, y ≤ w`, `0 ≤ z ≤ w`) is dropped whole (§13.7 "Primitive Clipping").
+//!   (`−w ≤ x, y ≤ w`, `0 ≤ z ≤ w`) is dropped whole (§13.7, "Primitive Clipping").
 //! - Line segments (§14.5 "Line Segments", §14.5.1, width 1): the diamond-exit rule. Each
 //!   pixel centre `c` has the open diamond `|x − c.x| + |y − c.y| < ½`; a segment from `a` to
 //!   `b` produces a fragment for each pixel whose diamond it intersects, except the pixel whose
@@ -16,7 +16,7 @@
 //!   the 1/256-pixel grid, integer arithmetic, and ε carried symbolically. Segments are clipped
 //!   in clip space against the near and far planes (and the guard band that keeps coordinates
 //!   in range, far outside the viewport); varyings are interpolated perspective-correctly at
-//!   `t = (c − a)·(b − a)/‖b − a‖²` (§14.5.1, equation 14.4; `t` clamped to [0, 1]) and depth
+//!   `t = (c − a)·(b − a)/‖b − a‖²` (§14.5.1; `t` clamped to [0, 1]) and depth
 //!   linearly in window space.
 //!
 //! Both run single-threaded, in submission order (deterministic for any thread count), with the
