@@ -5,7 +5,8 @@
 //!   square is half-open, `[x − ½, x + ½) × [y − ½, y + ½)` in screen space (y down), so two
 //!   points one pixel apart never cover the same sample; with one sample per pixel that is the
 //!   one pixel whose centre lies in the square. A point outside the view volume
-//!   (`−w ≤ x, y ≤ w`, `0 ≤ z ≤ w`) is dropped whole (OpenGL 4.6, "Primitive Clipping": a point outside the clip volume is discarded).
+//!   (`−w ≤ x, y ≤ w`, `0 ≤ z ≤ w`) is dropped whole (OpenGL 4.6, "Primitive Clipping": a
+//!   point outside the clip volume is discarded).
 //! - Line segments (§14.5 "Line Segments", §14.5.1, width 1): the diamond-exit rule. Each
 //!   pixel centre `c` has the open diamond `|x − c.x| + |y − c.y| < ½`; a segment from `a` to
 //!   `b` produces a fragment for each pixel whose diamond it intersects, except the pixel whose
