@@ -26,9 +26,6 @@ COMMAND = ["render", None, "--camera", "auto", "--shading", "unlit", "--aa", "no
 
 # Differences that are conventions of barytex's, not defects: fixture → why (shown in the doc).
 CONVENTIONS = {
-    "MeshPrimitiveModes": "barytex draws triangle primitives only; its loader skips POINTS, LINES, "
-    "LINE_LOOP and LINE_STRIP (glTF 2.0 §3.7.2.1 lists them as valid modes), as the "
-    "`barytex_gltf::Mesh` documentation says. The reference draws them 1 px wide.",
 }
 
 

@@ -642,20 +642,15 @@ impl Document {
                 match p.decode(&self.accessors, &reader)? {
                     Some(prim) => {
                         stats.primitives_loaded += 1;
+                        if !prim.topology.is_triangles() {
+                            stats.primitives_points_lines += 1;
+                        }
                         stats.triangles += prim.triangles.len();
                         primitives.push(prim);
                     }
                     None => {
-                        if p.topology.is_some_and(|t| !t.is_triangles()) {
-                            stats.primitives_skipped_non_triangle += 1;
-                            warnings.push(format!(
-                                "{}: {:?} primitive skipped (not triangles)",
-                                p.ptr, p.topology
-                            ));
-                        } else {
-                            stats.primitives_skipped_other += 1;
-                            warnings.push(format!("{}: primitive without POSITION skipped", p.ptr));
-                        }
+                        stats.primitives_skipped_other += 1;
+                        warnings.push(format!("{}: primitive without POSITION skipped", p.ptr));
                     }
                 }
             }

@@ -1,6 +1,6 @@
 //! Meshes and primitives: attribute semantics and formats checked against the specification's
 //! table (§3.7.2.1), index values checked against the vertex count, then decoded into plain
-//! vectors and triangle lists.
+//! vectors, triangle lists and (for points and lines) index lists.
 
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -12,7 +12,8 @@ use crate::json::{Obj, as_obj, child};
 use crate::material::Material;
 use crate::topology::{Topology, triangulate};
 
-/// A decoded triangle primitive.
+/// A decoded primitive: triangles, or points or lines (glTF 2.0 §3.7.2 "Meshes", modes 0–3)
+/// kept as their index lists.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Primitive {
     /// Object-space positions.
@@ -27,22 +28,29 @@ pub struct Primitive {
     pub tex_coords1: Option<Vec<Vec2>>,
     /// `COLOR_0` as linear RGBA (RGB colours get alpha 1).
     pub colors0: Option<Vec<Vec4>>,
-    /// Triangles as vertex indices, counter-clockwise front faces as in the file.
+    /// Triangles as vertex indices, counter-clockwise front faces as in the file (empty for
+    /// point and line topologies).
     pub triangles: Vec<[u32; 3]>,
+    /// For `POINTS`, `LINES`, `LINE_LOOP` and `LINE_STRIP`: the vertex indices in primitive
+    /// order (the `indices` accessor's values, or `0..count` without one), to be read as the
+    /// topology says; empty for triangle topologies, whose indices are in `triangles`.
+    pub indices: Vec<u32>,
     /// Index into [`Scene::materials`](crate::Scene::materials); `None` is the default material.
     pub material: Option<usize>,
-    /// The topology the triangles were built from.
+    /// The primitive's `mode`: the topology the triangles were built from, or the point or
+    /// line topology of `indices`.
     pub topology: Topology,
 }
 
-/// A decoded mesh: its triangle primitives (point and line primitives are skipped).
+/// A decoded mesh: its primitives (those without `POSITION` or with an unknown mode are
+/// skipped).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Mesh {
     /// Index into the document's `meshes`.
     pub index: usize,
     /// The mesh's name, if any.
     pub name: Option<String>,
-    /// Triangle primitives.
+    /// Triangle, point and line primitives.
     pub primitives: Vec<Primitive>,
 }
 
@@ -541,13 +549,13 @@ impl PrimitiveDef {
         Ok(())
     }
 
-    /// Decodes the primitive; `None` when it is not made of triangles or has no positions.
+    /// Decodes the primitive; `None` when its mode is unknown or it has no positions.
     pub(crate) fn decode(
         &self,
         accessors: &[AccessorDef],
         reader: &Reader<'_>,
     ) -> Result<Option<Primitive>, SceneError> {
-        let Some(topology) = self.topology.filter(|t| t.is_triangles()) else {
+        let Some(topology) = self.topology else {
             return Ok(None);
         };
         let Some(&pos) = self.attributes.get("POSITION") else {
@@ -618,7 +626,11 @@ impl PrimitiveDef {
             }
         };
         let indices = self.read_indices(accessors, reader)?;
-        let triangles = triangulate(topology, &indices);
+        let (triangles, indices) = if topology.is_triangles() {
+            (triangulate(topology, &indices), Vec::new())
+        } else {
+            (Vec::new(), indices)
+        };
         Ok(Some(Primitive {
             positions,
             normals,
@@ -627,6 +639,7 @@ impl PrimitiveDef {
             tex_coords1,
             colors0,
             triangles,
+            indices,
             material: self.material,
             topology,
         }))
@@ -648,12 +661,10 @@ impl PrimitiveDef {
         t.triangle_count(usize::try_from(n).unwrap_or(usize::MAX)) as u64
     }
 
-    /// Vertices a decoded triangle primitive holds (its attributes' count; 0 where
-    /// [`claimed_triangles`](Self::claimed_triangles) skips the primitive), from declared counts.
+    /// Vertices a decoded primitive holds (its attributes' count; 0 for one the loader skips:
+    /// no positions or an unknown mode), from declared counts.
     pub(crate) fn claimed_vertices(&self) -> u64 {
-        if !self.topology.is_some_and(|t| t.is_triangles())
-            || !self.attributes.contains_key("POSITION")
-        {
+        if self.topology.is_none() || !self.attributes.contains_key("POSITION") {
             return 0;
         }
         self.vertex_count.unwrap_or(0)

@@ -87,10 +87,10 @@ pub struct SceneStats {
     pub meshes_loaded: usize,
     /// Meshes in the document that the chosen scene does not use (validated, not decoded).
     pub meshes_unused: usize,
-    /// Triangle primitives decoded.
+    /// Primitives decoded (triangles, points and lines).
     pub primitives_loaded: usize,
-    /// Point and line primitives skipped.
-    pub primitives_skipped_non_triangle: usize,
+    /// Of those, point and line primitives (glTF modes 0–3).
+    pub primitives_points_lines: usize,
     /// Primitives skipped for lacking `POSITION` or having an unknown mode.
     pub primitives_skipped_other: usize,
     /// Triangles over the decoded meshes (each mesh once).

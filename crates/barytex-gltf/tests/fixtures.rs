@@ -175,15 +175,25 @@ fn primitive_modes() {
         assert_eq!(count(Topology::TriangleStrip), vec![4]);
         assert_eq!(count(Topology::TriangleFan), vec![6]);
         assert_eq!(s.triangle_count(), 16);
-        // POINTS, LINES, LINE_LOOP, LINE_STRIP: skipped, counted and warned about.
-        assert_eq!(s.stats.primitives_skipped_non_triangle, 4);
-        assert_eq!(
-            s.warnings
+        // POINTS, LINES, LINE_LOOP, LINE_STRIP: kept with their index lists, no triangles.
+        assert_eq!(s.stats.primitives_points_lines, 4);
+        assert_eq!(s.stats.primitives_loaded, 7);
+        assert!(!s.warnings.iter().any(|w| w.contains("not triangles")));
+        let kept = |t: Topology| -> Vec<(usize, usize)> {
+            s.instances
                 .iter()
-                .filter(|w| w.contains("not triangles"))
-                .count(),
-            4
-        );
+                .flat_map(|i| &i.mesh.primitives)
+                .filter(|pr| pr.topology == t)
+                .map(|pr| (pr.indices.len(), pr.triangles.len()))
+                .collect()
+        };
+        // The file's index counts: 7 points, 12 line indices (6 segments), 7 for the loop and
+        // the strip.
+        assert_eq!(kept(Topology::Points), vec![(7, 0)]);
+        assert_eq!(kept(Topology::Lines), vec![(12, 0)]);
+        assert_eq!(kept(Topology::LineLoop), vec![(7, 0)]);
+        assert_eq!(kept(Topology::LineStrip), vec![(7, 0)]);
+        assert_eq!(count(Topology::Triangles), vec![6]);
     });
 }
 

@@ -17,7 +17,7 @@ pub(crate) struct ClipVertex {
 }
 
 /// Signed distances to the planes (inside ≥ 0).
-fn planes(p: Vec4) -> [f32; 6] {
+pub(crate) fn planes(p: Vec4) -> [f32; 6] {
     [
         p.z,               // near: z ≥ 0
         p.w - p.z,         // far: z ≤ w

@@ -17,17 +17,24 @@ use crate::tile::{TileTarget, shade_piece};
 pub struct DrawStats {
     /// Triangles submitted (index triples).
     pub triangles_in: u64,
+    /// Points submitted ([`draw_points`](crate::draw_points)).
+    pub points_in: u64,
+    /// Line segments submitted ([`draw_lines`](crate::draw_lines); a strip or loop counted
+    /// segment by segment).
+    pub lines_in: u64,
     /// Dropped: an index out of range.
     pub dropped_bad_index: u64,
     /// Dropped: a NaN or infinite clip-space coordinate.
     pub dropped_non_finite: u64,
-    /// Entirely outside the near/far planes or the guard band after clipping.
+    /// Entirely outside the near/far planes or the guard band after clipping (a point: outside
+    /// the view volume).
     pub clipped_away: u64,
     /// Triangles that crossed a clip plane and were clipped (drawn in pieces).
     pub clipped: u64,
-    /// Culled by facing.
+    /// Culled by facing (triangles only: points and lines face the viewer).
     pub culled: u64,
-    /// Zero area after snapping to the sub-pixel grid.
+    /// Zero area (a triangle) or zero length (a line segment) after snapping to the sub-pixel
+    /// grid, or a point beyond [`MAX_COORDINATE`](crate::MAX_COORDINATE).
     pub degenerate: u64,
     /// Fragments the fragment stage ran for.
     pub fragments_shaded: u64,
@@ -41,6 +48,8 @@ pub struct DrawStats {
 impl core::ops::AddAssign<&DrawStats> for DrawStats {
     fn add_assign(&mut self, other: &Self) {
         self.triangles_in += other.triangles_in;
+        self.points_in += other.points_in;
+        self.lines_in += other.lines_in;
         self.dropped_bad_index += other.dropped_bad_index;
         self.dropped_non_finite += other.dropped_non_finite;
         self.clipped_away += other.clipped_away;
@@ -51,6 +60,37 @@ impl core::ops::AddAssign<&DrawStats> for DrawStats {
         self.fragments_discarded += other.fragments_discarded;
         self.fragments_depth_failed += other.fragments_depth_failed;
     }
+}
+
+/// The rectangle `[x0, y0, x1, y1)` that a draw may write: target ∩ viewport ∩ scissor.
+pub(crate) fn writable_rect(
+    target: &Framebuffer,
+    state: &PipelineState,
+    viewport: Viewport,
+) -> [i64; 4] {
+    let (w, h) = (i64::from(target.width()), i64::from(target.height()));
+    let mut rect = [0, 0, w, h];
+    let vp = [
+        viewport.x.floor() as i64,
+        viewport.y.floor() as i64,
+        (viewport.x + viewport.width).ceil() as i64,
+        (viewport.y + viewport.height).ceil() as i64,
+    ];
+    rect = [
+        rect[0].max(vp[0]),
+        rect[1].max(vp[1]),
+        rect[2].min(vp[2]),
+        rect[3].min(vp[3]),
+    ];
+    if let Some(s) = state.scissor {
+        rect = [
+            rect[0].max(i64::from(s.x0)),
+            rect[1].max(i64::from(s.y0)),
+            rect[2].min(i64::from(s.x1)),
+            rect[3].min(i64::from(s.y1)),
+        ];
+    }
+    rect
 }
 
 /// Draws indexed triangles (`indices` in triples) into `target` and returns what happened.
@@ -106,33 +146,12 @@ pub fn draw<S: Shader>(
         .viewport
         .unwrap_or_else(|| Viewport::full(target.width(), target.height()));
     let pieces = assemble(&shaded, indices, state, viewport, &mut stats);
-    // The rectangle that may be written: target ∩ viewport ∩ scissor.
-    let (w, h) = (i64::from(target.width()), i64::from(target.height()));
-    let mut rect = [0, 0, w, h];
-    let vp = [
-        viewport.x.floor() as i64,
-        viewport.y.floor() as i64,
-        (viewport.x + viewport.width).ceil() as i64,
-        (viewport.y + viewport.height).ceil() as i64,
-    ];
-    rect = [
-        rect[0].max(vp[0]),
-        rect[1].max(vp[1]),
-        rect[2].min(vp[2]),
-        rect[3].min(vp[3]),
-    ];
-    if let Some(s) = state.scissor {
-        rect = [
-            rect[0].max(i64::from(s.x0)),
-            rect[1].max(i64::from(s.y0)),
-            rect[2].min(i64::from(s.x1)),
-            rect[3].min(i64::from(s.y1)),
-        ];
-    }
+    let rect = writable_rect(target, state, viewport);
     if rect[0] >= rect[2] || rect[1] >= rect[3] || pieces.is_empty() {
         return stats;
     }
     // Bin pieces to tiles in submission order.
+    let h = i64::from(target.height());
     let tile = i64::from(TILE);
     let tiles_x = i64::from(target.tiles_x());
     let tiles_y = (h + tile - 1) / tile;

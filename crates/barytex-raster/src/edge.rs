@@ -37,7 +37,7 @@ pub(crate) struct EdgeSetup {
 }
 
 /// Rounds a screen coordinate to fixed point.
-fn fixed(v: f32) -> i64 {
+pub(crate) fn fixed(v: f32) -> i64 {
     (f64::from(v) * ONE as f64).round() as i64
 }
 

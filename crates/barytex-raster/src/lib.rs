@@ -6,7 +6,7 @@
 //! | concept | items |
 //! |---|---|
 //! | the seam | [`Shader`], [`Fragment`] |
-//! | the draw call | [`draw`], [`DrawStats`] |
+//! | the draw call | [`draw`] (triangles), [`draw_points`], [`draw_lines`] with a [`LineTopology`] (OpenGL 4.6 §14.4, §14.5: the diamond-exit rule), [`DrawStats`] |
 //! | state | [`PipelineState`], [`CullMode`], [`FrontFace`], [`Viewport`], [`Scissor`], [`DepthCompare`], [`Blend`], [`Interpolation`] |
 //! | targets | [`Framebuffer`] (one or more samples per pixel, tile-major storage) under [`TargetLimits`]; errors are [`RasterError`]s |
 //! | anti-aliasing | multisampled targets ([`Framebuffer::multisampled`] with a [`SamplePattern`]: regular, per-pixel jitter, the GPUs' standard positions) shaded per pixel (MSAA) or per sample; [`render_supersampled`] by accumulating passes; [`render_adaptive`] adds samples only where they disagree (up to 40) |
@@ -43,6 +43,7 @@ mod clip;
 mod draw;
 mod edge;
 mod error;
+mod primitives;
 mod samples;
 pub mod scanline;
 mod shader;
@@ -55,6 +56,7 @@ pub use adaptive::{AdaptiveOptions, AdaptiveStats, render_adaptive};
 pub use draw::{DrawStats, draw};
 pub use edge::{MAX_COORDINATE, SUBPIXEL_BITS};
 pub use error::{RasterError, TargetLimits};
+pub use primitives::{LineTopology, draw_lines, draw_points};
 pub use samples::{MAX_GRID, MAX_SAMPLES, SamplePattern};
 pub use shader::{Fragment, Shader};
 pub use state::{

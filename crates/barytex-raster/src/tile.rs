@@ -33,7 +33,7 @@ impl TileTarget<'_> {
 }
 
 #[inline]
-fn blend(state: &PipelineState, src: Vec4, dst: Vec4) -> Vec4 {
+pub(crate) fn blend(state: &PipelineState, src: Vec4, dst: Vec4) -> Vec4 {
     match state.blend {
         Blend::Replace => src,
         Blend::Over => src + dst * (1.0 - src.w),

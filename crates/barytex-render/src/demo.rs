@@ -162,6 +162,7 @@ fn primitive(mesh: barytex_uv::mesh::TriMesh, material: usize, uv_scale: f32) ->
         tex_coords1: None,
         colors0: None,
         triangles: mesh.indices,
+        indices: Vec::new(),
         material: Some(material),
         topology: Topology::Triangles,
     }

@@ -6,13 +6,13 @@ use std::time::Instant;
 
 use barytex_raster::{
     AdaptiveOptions, AdaptiveStats, Blend, CullMode, DrawStats, Framebuffer, FrontFace,
-    PipelineState, RasterError, SamplePattern, TargetLimits, Viewport, draw, render_adaptive,
-    render_supersampled,
+    PipelineState, RasterError, SamplePattern, TargetLimits, Viewport, draw, draw_lines,
+    draw_points, render_adaptive, render_supersampled,
 };
 use glam::{Vec2, Vec3};
 
 use crate::material_shader::{Frequency, MaterialShader};
-use crate::prepare::Prepared;
+use crate::prepare::{ItemKind, Prepared};
 use crate::raster_only::RasterOnly;
 use crate::surface::Reads;
 use crate::{AntiAliasing, RenderError, RenderOptions, Shading, planned_passes};
@@ -142,10 +142,20 @@ pub(crate) fn draw_passes(
                     sample_shading,
                     ..PipelineState::default()
                 };
-                let s = if raster_only {
-                    draw(fb, &RasterOnly(&shader), &state, &item.vertices, indices)
-                } else {
-                    draw(fb, &shader, &state, &item.vertices, indices)
+                let v = &item.vertices;
+                let s = match (item.kind, raster_only) {
+                    (ItemKind::Triangles, true) => {
+                        draw(fb, &RasterOnly(&shader), &state, v, indices)
+                    }
+                    (ItemKind::Triangles, false) => draw(fb, &shader, &state, v, indices),
+                    (ItemKind::Points, true) => {
+                        draw_points(fb, &RasterOnly(&shader), &state, v, indices)
+                    }
+                    (ItemKind::Points, false) => draw_points(fb, &shader, &state, v, indices),
+                    (ItemKind::Lines(t), true) => {
+                        draw_lines(fb, &RasterOnly(&shader), &state, v, indices, t)
+                    }
+                    (ItemKind::Lines(t), false) => draw_lines(fb, &shader, &state, v, indices, t),
                 };
                 stats += &s;
             }

@@ -5,8 +5,10 @@
 use std::borrow::Cow;
 use std::time::Instant;
 
+use barytex_gltf::Topology;
 use barytex_gltf::material::{AlphaMode, TextureRef};
 use barytex_gltf::scene::Scene;
+use barytex_raster::LineTopology;
 use barytex_shade::Light;
 use barytex_texture::TextureError;
 use barytex_texture::load::ColorSpace;
@@ -19,9 +21,36 @@ use crate::{
     CameraChoice, RenderCamera, RenderError, RenderOptions, Shading, auto_camera, scene_camera,
 };
 
+/// What an item's `indices` hold.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum ItemKind {
+    /// Index triples.
+    Triangles,
+    /// glTF `POINTS`: one index per point.
+    Points,
+    /// glTF `LINES`, `LINE_STRIP` or `LINE_LOOP`.
+    Lines(LineTopology),
+}
+
+impl ItemKind {
+    fn of(topology: Topology) -> Self {
+        match topology {
+            Topology::Points => Self::Points,
+            Topology::Lines => Self::Lines(LineTopology::List),
+            Topology::LineStrip => Self::Lines(LineTopology::Strip),
+            Topology::LineLoop => Self::Lines(LineTopology::Loop),
+            Topology::Triangles | Topology::TriangleStrip | Topology::TriangleFan => {
+                Self::Triangles
+            }
+        }
+    }
+}
+
 /// One primitive ready to draw.
 pub(crate) struct DrawItem<'a> {
     pub(crate) primitive: WorldPrimitive<'a>,
+    /// Triangles, points or lines, as `kind` says.
+    pub(crate) kind: ItemKind,
     pub(crate) indices: Vec<u32>,
     /// Under the hybrid mode, the triangles the H-test sent to Phong shading (the rest, in
     /// `indices`, are shaded Gouraud).
@@ -141,12 +170,22 @@ fn world_items<'a>(
                 vertex_count,
                 positions.iter().map(|p| view_projection * p.extend(1.0)),
             )?;
-            let index_count = primitive.triangles.len().saturating_mul(3);
-            let indices = try_collect(
-                "triangle indices",
-                index_count,
-                primitive.triangles.iter().flatten().copied(),
-            )?;
+            let kind = ItemKind::of(primitive.topology);
+            let indices = if kind == ItemKind::Triangles {
+                let index_count = primitive.triangles.len().saturating_mul(3);
+                try_collect(
+                    "triangle indices",
+                    index_count,
+                    primitive.triangles.iter().flatten().copied(),
+                )?
+            } else {
+                // Points and lines: the file's index list, read by the topology when drawn.
+                try_collect(
+                    "point and line indices",
+                    primitive.indices.len(),
+                    primitive.indices.iter().copied(),
+                )?
+            };
             let vertex_ids = try_collect(
                 "vertex indices",
                 vertex_count,
@@ -158,6 +197,7 @@ fn world_items<'a>(
             let centre = positions.iter().copied().sum::<Vec3>() / positions.len().max(1) as f32;
             items.push(DrawItem {
                 uv_per_pixel: uv_per_pixel(&clip, [uv0, uv1], &primitive.triangles, size),
+                kind,
                 indices,
                 phong_indices: Vec::new(),
                 vertices: vertex_ids,
@@ -183,7 +223,9 @@ fn world_items<'a>(
                     metallic: material.metallic_factor.clamp(0.0, 1.0),
                     roughness: material.roughness_factor.clamp(0.0, 1.0),
                     alpha_mode: material.alpha_mode,
-                    lit: lit && !material.unlit,
+                    // Points and lines have no surface to light: base colour factor × vertex
+                    // colour (× base texture), as glTF's unlit model.
+                    lit: lit && !material.unlit && kind == ItemKind::Triangles,
                 },
                 double_sided: material.double_sided,
                 flips_winding: instance.flips_winding,
@@ -310,6 +352,8 @@ fn prepare_textures(
         item.material.emissive_texture = emissive;
         item.material.occlusion_texture = occlusion;
         item.material.metallic_roughness_texture = metallic_roughness;
+        // Points and lines are unlit: no normal map, no tangents.
+        let normal = normal.filter(|_| item.kind == ItemKind::Triangles);
         item.material.normal_texture = normal;
         if let Some(slot) = normal {
             let (tangents, generated) = world_tangents(instance, primitive, slot.mapping.set);

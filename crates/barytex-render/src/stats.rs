@@ -3,14 +3,15 @@
 use barytex_raster::{AdaptiveStats, DrawStats};
 
 use crate::passes::Drawn;
-use crate::prepare::Prepared;
+use crate::prepare::{ItemKind, Prepared};
 
 /// What a render did and how long each stage took.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct RenderStats {
     /// Primitives drawn (opaque and masked first, then blended back to front).
     pub primitives: usize,
-    /// Triangles submitted per pass.
+    /// Triangles submitted per pass (point and line primitives are counted in `draw`'s
+    /// `points_in` and `lines_in`).
     pub triangles: usize,
     /// Fragment and triangle counts, summed over passes.
     pub draw: DrawStats,
@@ -62,6 +63,7 @@ impl RenderStats {
             primitives: items.len(),
             triangles: items
                 .iter()
+                .filter(|i| i.kind == ItemKind::Triangles)
                 .map(|i| (i.indices.len() + i.phong_indices.len()) / 3)
                 .sum(),
             draw: drawn.draw,

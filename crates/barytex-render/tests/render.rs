@@ -189,6 +189,49 @@ fn the_automatic_camera_frames_the_bounding_sphere() {
     }
 }
 
+/// glTF 2.0 §3.7.2 modes 0–3: MeshPrimitiveModes' top row (POINTS at y = 3) and middle row
+/// (LINES, LINE_LOOP, LINE_STRIP at x = −2, 0, 2, y = 0) are drawn unlit in the default
+/// material's white, and the automatic camera frames them too.
+#[test]
+fn points_and_lines_are_drawn_and_framed() {
+    let Some(scene) = load("MeshPrimitiveModes/glTF/MeshPrimitiveModes.gltf") else {
+        return;
+    };
+    // Seven vertices within x ∈ [−0.866, 0.866], y ∈ [−1, 1], placed at y = 3, 0 and −3 with
+    // the outer columns at x = ±2: the points row reaches y = 4, the triangles' row y = −4.
+    let (lo, hi) = scene_bounds(&scene).expect("geometry");
+    assert!(
+        (lo - Vec3::new(-2.866, -4.0, 0.0)).abs().max_element() < 1e-5,
+        "{lo}"
+    );
+    assert!(
+        (hi - Vec3::new(2.866, 4.0, 0.0)).abs().max_element() < 1e-5,
+        "{hi}"
+    );
+    let options = small(96, 96);
+    let out = render(&scene, &options).expect("renders");
+    // 7 points; 6 + 7 (the loop closed) + 6 segments.
+    assert_eq!((out.stats.draw.points_in, out.stats.draw.lines_in), (7, 19));
+    assert_eq!(out.stats.triangles, 16);
+    let pixels = srgb(&options, &scene);
+    let background = at(&pixels, 96, 0, 0);
+    let drawn = |x: std::ops::Range<u32>, y: std::ops::Range<u32>| {
+        y.flat_map(|y| x.clone().map(move |x| (x, y)))
+            .filter(|&(x, y)| at(&pixels, 96, x, y) != background)
+            .inspect(|&(x, y)| assert_eq!(at(&pixels, 96, x, y), [255; 4], "({x}, {y})"))
+            .count()
+    };
+    // The bounding sphere (radius √(2.866² + 4²) ≈ 4.92) spans the 96 pixels: about 9.75
+    // pixels per unit around the centre (48, 48). The points row, y ∈ [2, 4], is pixel rows
+    // 9–29: one pixel per point, none shared.
+    assert_eq!(drawn(0..96, 0..33), 7);
+    // The lines row, y ∈ [−1, 1], is rows 38–58; each of its three meshes drew.
+    for columns in [0..35, 35..61, 61..96] {
+        let n = drawn(columns.clone(), 34..62);
+        assert!(n > 10, "columns {columns:?}: {n} pixels");
+    }
+}
+
 #[test]
 fn bad_options_are_errors() {
     let Some(scene) = load("Box/glTF-Binary/Box.glb") else {

@@ -223,13 +223,13 @@ fn print_stats(rendered: &Rendered, scene: &Scene) {
     let d = &s.draw;
     println!(
         "scene: {} instances, {} triangles per pass, {} primitives; loader: {} images decoded, \
-         {} skipped (unused), {} primitives skipped (points/lines)",
+         {} skipped (unused), {} point and line primitives",
         scene.instances.len(),
         s.triangles,
         s.primitives,
         scene.stats.images_decoded,
         scene.stats.images_skipped,
-        scene.stats.primitives_skipped_non_triangle
+        scene.stats.primitives_points_lines
     );
     println!(
         "textures: {} prepared, {} mip chains built, {} not built (never minified); tangents \

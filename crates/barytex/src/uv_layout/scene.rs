@@ -74,6 +74,10 @@ fn layouts(scene: &Scene) -> Vec<Layout<'_>> {
             .map(|n| format!("-{}", file_safe(n)))
             .unwrap_or_default();
         for (p, primitive) in mesh.primitives.iter().enumerate() {
+            // Points and lines have no area to lay out.
+            if !primitive.topology.is_triangles() {
+                continue;
+            }
             let material = scene.material(primitive.material);
             let texture_ref = main_texture(&material);
             let Some(uvs) = primitive_uvs(primitive, texture_ref.as_ref().map(|(t, _)| t)) else {
