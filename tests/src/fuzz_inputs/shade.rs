@@ -18,7 +18,8 @@
 //!
 //! Invariants (barytex-shade's crate documentation: nothing panics, no term is ever negative; and
 //! each function's `# Special values`): every term of `shade` is neither NaN nor negative;
-//! a light's sample, when there is one, has a unit `to_light` (within `1e-3`) and an intensity
+//! a light's sample, when there is one, has a unit `to_light` (within `1e-5`, as
+//! `tests/lighting.rs::lights_never_panic_and_give_unit_directions` in barytex-shade) and an intensity
 //! that is neither NaN nor negative; `Attenuation::factor` is never NaN or negative, in `[0, 1]`
 //! for `Polynomial`, at most `10⁸` for `Punctual`; `SpotShape::factor` is in `[0, 1]`; Phong's and
 //! Blinn's specular factors are in `[0, 1]`, the normalized lobe finite and non-negative.
@@ -179,7 +180,7 @@ pub fn check_shade(bytes: &[u8]) -> Result<(), String> {
     for light in &lights {
         if let Some(s) = light.sample(p) {
             let len = s.to_light.length();
-            if !((len - 1.0).abs() <= 1e-3) || s.intensity.to_array().into_iter().any(bad) {
+            if !((len - 1.0).abs() <= 1e-5) || s.intensity.to_array().into_iter().any(bad) {
                 return Err(format!("{light:?}.sample({p:?}) = {s:?}"));
             }
             let factor = material.lobe.factor(n, s.to_light, v, material.shininess);
