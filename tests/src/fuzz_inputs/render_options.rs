@@ -236,7 +236,7 @@ pub fn check_render_options(bytes: &[u8]) -> Result<(), String> {
             for y in 0..options.height {
                 for x in 0..options.width {
                     let p = image.pixel(x, y);
-                    if !p.is_some_and(|p| !p.is_nan()) {
+                    if p.is_none_or(|p| p.is_nan()) {
                         return Err(format!("{options:?}: pixel ({x}, {y}) is {p:?}"));
                     }
                 }

@@ -180,7 +180,8 @@ pub fn check_shade(bytes: &[u8]) -> Result<(), String> {
     for light in &lights {
         if let Some(s) = light.sample(p) {
             let len = s.to_light.length();
-            if !((len - 1.0).abs() <= 1e-5) || s.intensity.to_array().into_iter().any(bad) {
+            let unit = (len - 1.0).abs() <= 1e-5;
+            if !unit || s.intensity.to_array().into_iter().any(bad) {
                 return Err(format!("{light:?}.sample({p:?}) = {s:?}"));
             }
             let factor = material.lobe.factor(n, s.to_light, v, material.shininess);
