@@ -12,7 +12,8 @@
 //! without any).
 //!
 //! Invariants (their documentation): every filtered colour is in `[0, 1]` per channel (unorm
-//! texels), except under a Catmull-Rom filter, documented to overshoot, where it is finite; a zero or non-finite direction gives the cube's transparent black, a
+//! texels) up to the f32 rounding slack of the `sampling` target (4 ε, or 16 ε for summed
+//! filters), except under a Catmull-Rom filter, documented to overshoot, where it is finite; a zero or non-finite direction gives the cube's transparent black, a
 //! non-finite `uvw` the volume's; the array's `layer_index` is a valid layer; comparison sampling
 //! gives `Some` value in `[0, 1]` with a comparison function and `None` without.
 
@@ -169,22 +170,30 @@ impl Textures3dInput {
     }
 }
 
-/// In `[0, 1]`; with a Catmull-Rom filter, which may overshoot (`CubicKernel::CatmullRom`), only
-/// finite.
+/// In `[0, 1]` up to f32 rounding — the slack the `sampling` target allows around the texels'
+/// range: 4 ε for two-tap blends, 16 ε where up to 16 weighted terms are summed and normalised
+/// (cubic, anisotropic probes, EWA); with a Catmull-Rom filter, which may overshoot
+/// (`CubicKernel::CatmullRom`), only finite.
 fn check_colour(what: &str, c: Vec4, d: &SamplerDescriptor) -> Result<(), String> {
     let catmull_rom = FilterMode::Cubic(CubicKernel::CatmullRom);
     let overshoots = d.mag_filter == catmull_rom || d.min_filter == catmull_rom;
+    let summed = d.anisotropy_clamp > 1
+        || matches!(d.mag_filter, FilterMode::Cubic(_))
+        || matches!(d.min_filter, FilterMode::Cubic(_));
+    let slack = if summed { 16.0 } else { 4.0 } * f32::EPSILON;
     let ok = |x: &f32| {
         if overshoots {
             x.is_finite()
         } else {
-            (0.0..=1.0).contains(x)
+            (-slack..=1.0 + slack).contains(x)
         }
     };
     if c.to_array().iter().all(ok) {
         Ok(())
     } else {
-        Err(format!("{what} = {c:?}, not in [0, 1] under {d:?}"))
+        Err(format!(
+            "{what} = {c:?}, not in [0, 1] (slack {slack:e}) under {d:?}"
+        ))
     }
 }
 
