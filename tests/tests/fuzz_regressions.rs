@@ -111,6 +111,145 @@ fn uv_mappings_regressions() {
 }
 
 #[test]
+fn png_jpeg_loader_regressions() {
+    replay(
+        "png_jpeg_loader",
+        barytex_tests::fuzz_inputs::png_jpeg_loader::check_png_jpeg_loader,
+    );
+}
+
+#[test]
+fn render_options_regressions() {
+    replay(
+        "render_options",
+        barytex_tests::fuzz_inputs::render_options::check_render_options,
+    );
+}
+
+#[test]
+fn textures_3d_regressions() {
+    replay(
+        "textures_3d",
+        barytex_tests::fuzz_inputs::textures_3d::check_textures_3d,
+    );
+}
+
+#[test]
+fn interp_3d_regressions() {
+    replay(
+        "interp_3d",
+        barytex_tests::fuzz_inputs::interp_3d::check_interp_3d,
+    );
+}
+
+#[test]
+fn shade_regressions() {
+    replay("shade", barytex_tests::fuzz_inputs::shade::check_shade);
+}
+
+#[test]
+fn load_path_regressions() {
+    replay(
+        "load_path",
+        barytex_tests::fuzz_inputs::load_path::check_load_path,
+    );
+}
+
+/// `fuzz/max_len` gives every target in `fuzz/fuzz_targets/` the input size its decoder reads
+/// (`.ci/run` passes it to libFuzzer as `-max_len`).
+#[test]
+fn max_len_table_matches_the_decoders() {
+    use barytex_tests::fuzz_inputs as f;
+    let decoders: &[(&str, usize)] = &[
+        ("orient_barycentric", f::ORIENT_BARYCENTRIC_LEN),
+        ("inverse_bilinear", f::INVERSE_BILINEAR_LEN),
+        ("slerp", f::slerp::SLERP_LEN),
+        ("polygon", f::polygon::POLYGON_LEN),
+        ("hull2d", f::hull2d::HULL2D_LEN),
+        ("hull3d", f::hull3d::HULL3D_LEN),
+        ("uv_mappings", f::uv_mappings::UV_MAPPINGS_LEN),
+        ("environment", f::environment::ENVIRONMENT_LEN),
+        ("sampling", f::sampling::SAMPLING_LEN),
+        ("mip_generation", f::mip_generation::MIP_LEN),
+        ("raster_soup", f::raster_soup::RASTER_SOUP_LEN),
+        ("gltf_loader", f::gltf_loader::GLTF_LEN),
+        ("png_jpeg_loader", f::png_jpeg_loader::PNG_JPEG_LEN),
+        ("render_options", f::render_options::RENDER_OPTIONS_LEN),
+        ("textures_3d", f::textures_3d::TEXTURES_3D_LEN),
+        ("interp_3d", f::interp_3d::INTERP_3D_LEN),
+        ("shade", f::shade::SHADE_LEN),
+        ("load_path", f::load_path::LOAD_PATH_LEN),
+    ];
+    let fuzz = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fuzz");
+    let table = std::fs::read_to_string(fuzz.join("max_len")).expect("fuzz/max_len");
+    let table: Vec<(String, usize)> = table
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with('#'))
+        .map(|l| {
+            let mut it = l.split_whitespace();
+            let name = it.next().expect("a target").to_owned();
+            let len = it.next().and_then(|n| n.parse().ok());
+            (
+                name,
+                len.unwrap_or_else(|| panic!("fuzz/max_len: no length in {l:?}")),
+            )
+        })
+        .collect();
+    let mut targets: Vec<String> = std::fs::read_dir(fuzz.join("fuzz_targets"))
+        .expect("fuzz/fuzz_targets")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "rs"))
+        .map(|p| {
+            p.file_stem()
+                .unwrap_or_default()
+                .to_string_lossy()
+                .into_owned()
+        })
+        .collect();
+    targets.sort();
+    let mut listed: Vec<String> = table.iter().map(|(t, _)| t.clone()).collect();
+    listed.sort();
+    assert_eq!(
+        listed, targets,
+        "fuzz/max_len must list every fuzz target once"
+    );
+    for (target, len) in &table {
+        let want = decoders
+            .iter()
+            .find(|(t, _)| t == target)
+            .unwrap_or_else(|| panic!("{target}: add its decoder's length to this test"))
+            .1;
+        assert_eq!(*len, want, "fuzz/max_len: {target}");
+    }
+}
+
+/// The generated glTF seeds reach deep: they load under the fuzz limits with their embedded
+/// image, lights, cameras and both primitives (indexed, and non-indexed with a sparse accessor).
+#[test]
+fn gltf_seeds_load_with_everything() {
+    use barytex_gltf::{LoadOptions, load_slice};
+    use barytex_tests::fuzz_inputs::gltf_loader::fuzz_limits;
+    for name in ["seed-textured-lights.glb", "seed-textured-lights.gltf"] {
+        let bytes = std::fs::read(regressions_dir("gltf_loader").join(name)).expect("a seed");
+        let options = LoadOptions {
+            limits: fuzz_limits(),
+            ..LoadOptions::default()
+        };
+        let scene = load_slice(&bytes, &options).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(scene.lights.len(), 3, "{name}");
+        assert_eq!(scene.cameras.len(), 2, "{name}");
+        assert_eq!(scene.stats.images_decoded, 1, "{name}");
+        assert_eq!(scene.stats.primitives_loaded, 3, "{name}");
+        assert!(scene.warnings.is_empty(), "{name}: {:?}", scene.warnings);
+    }
+    // The render_options scene loads too (it panics otherwise).
+    let scene = barytex_tests::fuzz_inputs::render_options::render_options_scene();
+    assert_eq!((scene.lights.len(), scene.cameras.len()), (3, 1));
+    assert_eq!(scene.stats.images_decoded, 1);
+}
+
+#[test]
 fn orient_barycentric_regressions() {
     replay("orient_barycentric", check_orient_barycentric);
 }

@@ -120,7 +120,7 @@ impl Light {
     pub fn sample(&self, point: Vec3) -> Option<LightSample> {
         match *self {
             Self::Directional { direction, color } => Some(LightSample {
-                to_light: (-direction).try_normalize()?,
+                to_light: unit(-direction)?,
                 intensity: color,
                 distance: f32::INFINITY,
             }),
@@ -144,7 +144,7 @@ impl Light {
                 shape,
             } => {
                 let (to_light, distance) = towards(point, position)?;
-                let axis = direction.try_normalize()?;
+                let axis = unit(direction)?;
                 let spot = shape.factor(axis.dot(-to_light));
                 Some(LightSample {
                     to_light,
@@ -156,12 +156,27 @@ impl Light {
     }
 }
 
-/// Unit direction and distance from `from` to `to`; `None` when they coincide or are not finite.
+/// Unit direction and distance from `from` to `to`; `None` when they coincide or are not finite
+/// (the distance too: points more than `f32::MAX` apart).
 fn towards(from: Vec3, to: Vec3) -> Option<(Vec3, f32)> {
     let d = to - from;
-    let distance = d.length();
-    if !distance.is_finite() || distance == 0.0 {
+    let to_light = unit(d)?;
+    // |d| = m·|d/m| with m the largest component: no underflow for subnormal offsets.
+    let m = d.abs().max_element();
+    let distance = m * (d / m).length();
+    if !distance.is_finite() {
         return None;
     }
-    Some((d / distance, distance))
+    Some((to_light, distance))
+}
+
+/// `v / |v|`, `None` for a zero or non-finite `v`. Scaled by the largest component first, so the
+/// squared length neither underflows (a direction of length 1e-22 normalized through glam's
+/// `try_normalize` came out 0.1 % too long: its square is subnormal) nor overflows.
+fn unit(v: Vec3) -> Option<Vec3> {
+    let m = v.abs().max_element();
+    if !(m.is_finite() && m > 0.0) {
+        return None;
+    }
+    (v / m).try_normalize()
 }

@@ -429,3 +429,50 @@ fn height_fog_without_falloff_is_exponential_fog() {
     );
     assert_eq!(thick.factor(Vec3::NAN, Vec3::ZERO), 0.0);
 }
+
+/// Tiny and huge directions and offsets still give unit `to_light` vectors: normalizing through
+/// the squared length lost precision once that square was subnormal (a directional light along
+/// `(5e-22, 5e-22, 5e-22)` came out 0.1 % too long; found by fuzz `shade`).
+#[test]
+fn tiny_and_huge_directions_give_unit_vectors() {
+    let colour = Vec3::ONE;
+    for s in [
+        5.16524e-22f32,
+        1e-30,
+        1e-40,
+        f32::from_bits(1),
+        1e30,
+        1e38,
+        f32::MAX,
+    ] {
+        let d = Vec3::new(s, s, -s);
+        let lights = [
+            Light::Directional {
+                direction: d,
+                color: colour,
+            },
+            Light::Point {
+                position: d,
+                color: colour,
+                attenuation: Attenuation::NONE,
+            },
+            Light::Spot {
+                position: d,
+                direction: -d,
+                color: colour,
+                attenuation: Attenuation::NONE,
+                shape: SpotShape::Warn { exponent: 1.0 },
+            },
+        ];
+        for light in lights {
+            // Points f32::MAX·√3 away are beyond f32: no sample, documented as non-finite input.
+            if let Some(sample) = light.sample(Vec3::ZERO) {
+                let len = sample.to_light.length();
+                assert!((len - 1.0).abs() < 1e-6, "{light:?}: |to_light| = {len}");
+                assert!(sample.distance > 0.0, "{light:?}: {sample:?}");
+            } else {
+                assert!(s > 1e38, "{light:?} gave no sample");
+            }
+        }
+    }
+}

@@ -19,7 +19,9 @@ use crate::{MipChain, Texel, Texture2d, TextureError};
 ///
 /// # Documented values for bad input
 /// A zero or non-finite direction gives transparent black; non-finite derivatives select the
-/// most blurred level the clamps allow.
+/// most blurred level the clamps allow. The descriptor's LOD clamps, bias and anisotropy are
+/// sanitised as [`TextureSampler::new`](crate::TextureSampler::new) does (a NaN `lod_min_clamp`
+/// is 0, a NaN `lod_max_clamp` 32, a non-finite bias 0).
 #[derive(Clone, Debug)]
 pub struct CubeTexture<T> {
     faces: [MipChain<T>; 6],
@@ -69,7 +71,12 @@ impl<T: Texel> CubeTexture<T> {
                 reason: "cube faces must have equal sizes and chain lengths",
             });
         }
-        Ok(Self { faces, descriptor })
+        // The LOD clamps and bias as `TextureSampler` sanitises them: a NaN `lod_min_clamp` made
+        // `clamp_lod` panic (`f32::clamp` with a NaN bound).
+        Ok(Self {
+            faces,
+            descriptor: descriptor.sanitized(),
+        })
     }
 
     /// The face chains.

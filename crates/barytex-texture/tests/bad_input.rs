@@ -442,3 +442,37 @@ fn save_png_into_a_missing_folder_is_a_decode_error() {
     );
     assert!(!path.exists());
 }
+
+/// A cube map sanitises its descriptor like `TextureSampler::new`: a NaN `lod_min_clamp` made
+/// `clamp_lod` panic (`f32::clamp` with a NaN bound; found by fuzz `textures_3d`).
+#[test]
+fn cube_sanitises_nan_lod_clamps_and_bias() {
+    let face = || {
+        MipChain::single(Texture2d::from_fn(4, 4, |_, _| Rgba8([10, 20, 30, 255])).expect("small"))
+    };
+    for (min, max, bias) in [
+        (f32::NAN, 32.0, 0.0),
+        (0.0, f32::NAN, 0.0),
+        (f32::NAN, f32::NAN, f32::INFINITY),
+        (2.0, 1.0, f32::NAN),
+    ] {
+        let d = SamplerDescriptor {
+            lod_min_clamp: min,
+            lod_max_clamp: max,
+            lod_bias: bias,
+            ..SamplerDescriptor::bilinear()
+        };
+        let cube = CubeTexture::new(std::array::from_fn(|_| face()), d).expect("square faces");
+        for lod in [f32::NAN, f32::NEG_INFINITY, -1.0, 0.0, 3.0, f32::INFINITY] {
+            let c = cube.sample_level(glam::Vec3::X, lod);
+            assert!(
+                (c - glam::Vec4::new(10.0, 20.0, 30.0, 255.0) / 255.0)
+                    .abs()
+                    .max_element()
+                    < 1e-6
+            );
+        }
+        let c = cube.sample(glam::Vec3::Y, glam::Vec3::NAN, glam::Vec3::ZERO);
+        assert!(c.is_finite(), "{c:?}");
+    }
+}

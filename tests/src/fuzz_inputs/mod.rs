@@ -14,11 +14,17 @@ pub mod environment;
 pub mod gltf_loader;
 pub mod hull2d;
 pub mod hull3d;
+pub mod interp_3d;
+pub mod load_path;
 pub mod mip_generation;
+pub mod png_jpeg_loader;
 pub mod polygon;
 pub mod raster_soup;
+pub mod render_options;
 pub mod sampling;
+pub mod shade;
 pub mod slerp;
+pub mod textures_3d;
 pub mod uv_mappings;
 
 use std::fmt::Write as _;

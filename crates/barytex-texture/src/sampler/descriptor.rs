@@ -156,6 +156,28 @@ impl Default for SamplerDescriptor {
 }
 
 impl SamplerDescriptor {
+    /// The descriptor as the samplers use it: a NaN `lod_min_clamp` becomes 0, a NaN
+    /// `lod_max_clamp` 32, `lod_max_clamp` is raised to `lod_min_clamp`, a non-finite `lod_bias`
+    /// becomes 0, and `anisotropy_clamp` is clamped to 1…16 ([`TextureSampler::new`] and
+    /// [`CubeTexture::new`](crate::CubeTexture::new) apply it).
+    ///
+    /// [`TextureSampler::new`]: crate::TextureSampler::new
+    pub(crate) fn sanitized(self) -> Self {
+        let mut d = self;
+        if d.lod_min_clamp.is_nan() {
+            d.lod_min_clamp = 0.0;
+        }
+        if d.lod_max_clamp.is_nan() {
+            d.lod_max_clamp = 32.0;
+        }
+        d.lod_max_clamp = d.lod_max_clamp.max(d.lod_min_clamp);
+        if !d.lod_bias.is_finite() {
+            d.lod_bias = 0.0;
+        }
+        d.anisotropy_clamp = d.anisotropy_clamp.clamp(1, 16);
+        d
+    }
+
     /// Bilinear within a level, nearest level: wgpu's common "linear" sampler without mip blending.
     ///
     /// ```

@@ -80,18 +80,7 @@ impl<T: Texel> TextureSampler<T> {
     /// ```
     #[must_use]
     pub fn new(chain: MipChain<T>, descriptor: SamplerDescriptor) -> Self {
-        let mut d = descriptor;
-        if d.lod_min_clamp.is_nan() {
-            d.lod_min_clamp = 0.0;
-        }
-        if d.lod_max_clamp.is_nan() {
-            d.lod_max_clamp = 32.0;
-        }
-        d.lod_max_clamp = d.lod_max_clamp.max(d.lod_min_clamp);
-        if !d.lod_bias.is_finite() {
-            d.lod_bias = 0.0;
-        }
-        d.anisotropy_clamp = d.anisotropy_clamp.clamp(1, 16);
+        let d = descriptor.sanitized();
         let addressing = Addressing::new(d.address_mode_u, d.address_mode_v, d.border_color);
         Self {
             chain,
