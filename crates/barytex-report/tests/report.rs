@@ -79,6 +79,24 @@ fn quick_report_writes_every_family() {
     ] {
         assert!(texture.contains(heading), "missing {heading:?}");
     }
+    // Observations are sentences computed from the figures, one per scene and comparison; the
+    // picture strip is not one of them.
+    let observations = texture
+        .split("Observations (computed from the figures above):")
+        .nth(1)
+        .expect("texture.md has observations");
+    let notes: Vec<&str> = observations
+        .lines()
+        .take_while(|l| l.is_empty() || l.starts_with("- "))
+        .filter(|l| l.starts_with("- "))
+        .collect();
+    assert_eq!(notes.len(), 6, "{notes:?}");
+    assert!(
+        notes
+            .iter()
+            .all(|n| n.contains("trilinear") && !n.contains("![")),
+        "{notes:?}"
+    );
     let raster = std::fs::read_to_string(dir.join("raster.md")).unwrap();
     assert!(index.contains("raster.md"), "{index}");
     for heading in [
