@@ -7,49 +7,11 @@ mod common;
 
 use std::sync::Arc;
 
-use barytex_gltf::{LoadOptions, Scene, SceneError, SceneLimits, load_slice, load_slice_with_base};
+use barytex_gltf::{LoadOptions, SceneError, SceneLimits, load_slice, load_slice_with_base};
 use barytex_texture::load::encode_png;
 use barytex_texture::{Rgba8, Texture2d};
 
-fn with_limits(limits: SceneLimits) -> LoadOptions {
-    LoadOptions {
-        limits,
-        ..LoadOptions::default()
-    }
-}
-
-/// Asserts a `TooLarge` for `what` at `pointer`, asking for `requested` against `limit`.
-#[track_caller]
-fn assert_too_large(
-    r: &Result<Scene, SceneError>,
-    what: &str,
-    pointer: &str,
-    requested: u64,
-    limit: u64,
-) {
-    match r {
-        Err(
-            e @ SceneError::TooLarge {
-                what: w,
-                pointer: p,
-                requested: req,
-                limit: lim,
-            },
-        ) => {
-            assert_eq!(
-                (*w, p.as_str(), *req, *lim),
-                (what, pointer, requested, limit),
-                "{e}"
-            );
-            let text = e.to_string();
-            assert!(
-                text.contains(&requested.to_string()) && text.contains(&limit.to_string()),
-                "{text}"
-            );
-        }
-        other => panic!("expected TooLarge {{ what: {what:?} }}, got {other:?}"),
-    }
-}
+use common::{assert_too_large, temp_dir, with_limits};
 
 /// A mesh of `triangles` non-indexed triangles (zero positions, no bufferView) placed by
 /// `nodes` root nodes.
@@ -171,14 +133,6 @@ fn max_lights_counts_placed_lights() {
     assert_too_large(&r, "lights", "/nodes/1024", 1025, 1024);
 }
 
-/// A fresh, empty folder for this test.
-fn temp_dir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("barytex-budgets-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
-}
-
 /// A `side`² RGBA PNG (decoded: 4 bytes a texel, sRGB or linear).
 fn png(side: u32) -> Vec<u8> {
     let t =
@@ -268,38 +222,7 @@ fn max_total_image_bytes_counts_each_distinct_source_once() {
 /// A PNG whose header claims `width × height` RGBA8 but whose data is only a zlib header:
 /// decoding it fails, but its size can be read.
 fn png_header_only(width: u32, height: u32) -> Vec<u8> {
-    let mut out = b"\x89PNG\r\n\x1a\n".to_vec();
-    let mut chunk = |ty: &[u8], data: &[u8]| {
-        out.extend_from_slice(&(data.len() as u32).to_be_bytes());
-        let mut crc_input = ty.to_vec();
-        crc_input.extend_from_slice(data);
-        out.extend_from_slice(&crc_input);
-        out.extend_from_slice(&crc32(&crc_input).to_be_bytes());
-    };
-    let mut ihdr = Vec::new();
-    ihdr.extend_from_slice(&width.to_be_bytes());
-    ihdr.extend_from_slice(&height.to_be_bytes());
-    ihdr.extend_from_slice(&[8, 6, 0, 0, 0]); // 8-bit RGBA, deflate, no filter, no interlace
-    chunk(b"IHDR", &ihdr);
-    chunk(b"IDAT", &[0x78, 0x9C]);
-    chunk(b"IEND", &[]);
-    out
-}
-
-/// CRC-32 (ISO 3309, as PNG uses it).
-fn crc32(bytes: &[u8]) -> u32 {
-    let mut crc = !0u32;
-    for &b in bytes {
-        crc ^= u32::from(b);
-        for _ in 0..8 {
-            crc = if crc & 1 == 1 {
-                (crc >> 1) ^ 0xEDB8_8320
-            } else {
-                crc >> 1
-            };
-        }
-    }
-    !crc
+    barytex_testkit::png_with_header(width, height, &[0x78, 0x9C])
 }
 
 #[test]

@@ -10,59 +10,8 @@ use barytex_gltf::{
 };
 use barytex_texture::load::encode_png;
 use barytex_texture::{Rgba8, Texture2d};
-use std::path::PathBuf;
 
-fn with_limits(limits: SceneLimits) -> LoadOptions {
-    LoadOptions {
-        limits,
-        ..LoadOptions::default()
-    }
-}
-
-/// A fresh, empty folder for this test (removed first if a previous run left it).
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!(
-        "barytex-scene-limits-{}-{name}",
-        std::process::id()
-    ));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir
-}
-
-/// Asserts a `TooLarge` for `what` at `pointer`, asking for `requested` against `limit`, and that
-/// the message names both numbers.
-#[track_caller]
-fn assert_too_large(
-    r: &Result<barytex_gltf::Scene, SceneError>,
-    what: &str,
-    pointer: &str,
-    requested: u64,
-    limit: u64,
-) {
-    match r {
-        Err(
-            e @ SceneError::TooLarge {
-                what: w,
-                pointer: p,
-                requested: req,
-                limit: lim,
-            },
-        ) => {
-            assert_eq!(
-                (*w, p.as_str(), *req, *lim),
-                (what, pointer, requested, limit),
-                "{e}"
-            );
-            let text = e.to_string();
-            assert!(
-                text.contains(&requested.to_string()) && text.contains(&limit.to_string()),
-                "the message should name the size and the limit: {text}"
-            );
-        }
-        other => panic!("expected TooLarge {{ what: {what:?} }}, got {other:?}"),
-    }
-}
+use common::{assert_too_large, temp_dir, with_limits};
 
 /// One triangle (three zero positions, no bufferView) placed by `nodes` nodes, all roots.
 fn triangle_instanced(nodes: usize) -> String {

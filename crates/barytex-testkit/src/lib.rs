@@ -85,3 +85,43 @@ pub fn sample_models() -> Vec<std::path::PathBuf> {
     out.sort();
     out
 }
+
+/// A PNG whose header claims `width × height` 8-bit RGBA and whose only image data is `idat`
+/// (hand-made chunks with correct CRCs): its size can be read from the header, but decoding it
+/// fails unless `idat` really holds the pixels. For tests of limits checked before decoding.
+#[must_use]
+pub fn png_with_header(width: u32, height: u32, idat: &[u8]) -> Vec<u8> {
+    let mut png = b"\x89PNG\r\n\x1a\n".to_vec();
+    let mut chunk = |kind: &[u8], data: &[u8]| {
+        let len = u32::try_from(data.len()).expect("a test chunk fits in u32");
+        png.extend_from_slice(&len.to_be_bytes());
+        let mut body = kind.to_vec();
+        body.extend_from_slice(data);
+        png.extend_from_slice(&body);
+        png.extend_from_slice(&crc32(&body).to_be_bytes());
+    };
+    let mut ihdr = Vec::new();
+    ihdr.extend_from_slice(&width.to_be_bytes());
+    ihdr.extend_from_slice(&height.to_be_bytes());
+    ihdr.extend_from_slice(&[8, 6, 0, 0, 0]); // 8-bit RGBA, deflate, no filter, no interlace
+    chunk(b"IHDR", &ihdr);
+    chunk(b"IDAT", idat);
+    chunk(b"IEND", &[]);
+    png
+}
+
+/// CRC-32 (ISO 3309 / IEEE, as PNG chunks use it).
+fn crc32(bytes: &[u8]) -> u32 {
+    let mut crc = 0xFFFF_FFFF_u32;
+    for &b in bytes {
+        crc ^= u32::from(b);
+        for _ in 0..8 {
+            crc = if crc & 1 == 1 {
+                (crc >> 1) ^ 0xEDB8_8320
+            } else {
+                crc >> 1
+            };
+        }
+    }
+    !crc
+}
