@@ -44,7 +44,8 @@ pub struct SamplingInput {
     pub bias: f32,
 }
 
-fn filter(bits: u8) -> FilterMode {
+/// Filter mode from two bits (nearest, linear, Catmull-Rom, B-spline).
+pub(super) fn filter(bits: u8) -> FilterMode {
     match bits & 3 {
         0 => FilterMode::Nearest,
         1 => FilterMode::Linear,
@@ -53,12 +54,45 @@ fn filter(bits: u8) -> FilterMode {
     }
 }
 
-fn address(bits: u8) -> AddressMode {
+/// Address mode from two bits.
+pub(super) fn address(bits: u8) -> AddressMode {
     [
         AddressMode::ClampToEdge,
         AddressMode::Repeat,
         AddressMode::MirrorRepeat,
         AddressMode::ClampToBorder,
+    ][usize::from(bits & 3)]
+}
+
+/// The filtering half of a descriptor from one byte: mag filter (bits 0–1), min filter (2–3),
+/// linear mipmaps (4), anisotropy ×16 (5), EWA (6); the rest default. Shared with the
+/// `textures_3d` target, whose byte means the same.
+pub(super) fn filtering(filters: u8) -> SamplerDescriptor {
+    SamplerDescriptor {
+        mag_filter: filter(filters),
+        min_filter: filter(filters >> 2),
+        mipmap_filter: if filters & 16 != 0 {
+            MipmapFilterMode::Linear
+        } else {
+            MipmapFilterMode::Nearest
+        },
+        anisotropy_clamp: if filters & 32 != 0 { 16 } else { 1 },
+        anisotropic_filter: if filters & 64 != 0 {
+            AnisotropicFilter::Ewa
+        } else {
+            AnisotropicFilter::Probes
+        },
+        ..SamplerDescriptor::default()
+    }
+}
+
+/// Border colour from two bits.
+pub(super) fn border(bits: u8) -> BorderColor {
+    [
+        BorderColor::TransparentBlack,
+        BorderColor::OpaqueBlack,
+        BorderColor::OpaqueWhite,
+        BorderColor::Zero,
     ][usize::from(bits & 3)]
 }
 
@@ -88,31 +122,11 @@ pub fn sampling_input(bytes: &[u8]) -> SamplingInput {
     let descriptor = SamplerDescriptor {
         address_mode_u: address(modes),
         address_mode_v: address(modes >> 2),
-        mag_filter: filter(filters),
-        min_filter: filter(filters >> 2),
-        mipmap_filter: if filters & 16 != 0 {
-            MipmapFilterMode::Linear
-        } else {
-            MipmapFilterMode::Nearest
-        },
-        anisotropy_clamp: if filters & 32 != 0 { 16 } else { 1 },
-        anisotropic_filter: if filters & 64 != 0 {
-            AnisotropicFilter::Ewa
-        } else {
-            AnisotropicFilter::Probes
-        },
-        border_color: Some(
-            [
-                BorderColor::TransparentBlack,
-                BorderColor::OpaqueBlack,
-                BorderColor::OpaqueWhite,
-                BorderColor::Zero,
-            ][usize::from((modes >> 4) & 3)],
-        ),
+        border_color: Some(border(modes >> 4)),
         lod_bias: f(8),
         lod_min_clamp: f(8 + 1),
         lod_max_clamp: f(8 + 2),
-        ..SamplerDescriptor::default()
+        ..filtering(filters)
     };
     SamplingInput {
         texture,

@@ -19,40 +19,20 @@
 
 use std::fmt::Write as _;
 
-use barytex_texture::sampler::{
-    AddressMode, AnisotropicFilter, BorderColor, CompareFunction, CubicKernel, FilterMode,
-    MipmapFilterMode,
-};
+use barytex_texture::sampler::{CompareFunction, CubicKernel, FilterMode};
 use barytex_texture::{
     CubeTexture, Limits, MipChain, MipOptions, Rgba8, SamplerDescriptor, Texture2d, Texture2dArray,
     Texture3d, TextureSampler,
 };
 use glam::{Vec3, Vec4};
 
+use super::sampling::{address, border, filtering};
 use super::word;
 
 /// Bytes of the fixed part (the texels follow).
 pub const TEXTURES_3D_HEADER: usize = 4 + 14 * 4;
 /// The most bytes the target reads: the header and an 8 × 8 × 4 block of texels.
 pub const TEXTURES_3D_LEN: usize = TEXTURES_3D_HEADER + 8 * 8 * 4 * 4;
-
-fn filter(bits: u8) -> FilterMode {
-    match bits & 3 {
-        0 => FilterMode::Nearest,
-        1 => FilterMode::Linear,
-        2 => FilterMode::Cubic(CubicKernel::CatmullRom),
-        _ => FilterMode::Cubic(CubicKernel::BSpline),
-    }
-}
-
-fn address(bits: u8) -> AddressMode {
-    [
-        AddressMode::ClampToEdge,
-        AddressMode::Repeat,
-        AddressMode::MirrorRepeat,
-        AddressMode::ClampToBorder,
-    ][usize::from(bits & 3)]
-}
 
 /// A decoded `textures_3d` input.
 #[derive(Clone, Debug)]
@@ -104,31 +84,11 @@ pub fn textures_3d_input(bytes: &[u8]) -> Textures3dInput {
         address_mode_u: address(modes),
         address_mode_v: address(modes >> 2),
         address_mode_w: address(modes >> 4),
-        mag_filter: filter(filters),
-        min_filter: filter(filters >> 2),
-        mipmap_filter: if filters & 16 != 0 {
-            MipmapFilterMode::Linear
-        } else {
-            MipmapFilterMode::Nearest
-        },
-        anisotropy_clamp: if filters & 32 != 0 { 16 } else { 1 },
-        anisotropic_filter: if filters & 64 != 0 {
-            AnisotropicFilter::Ewa
-        } else {
-            AnisotropicFilter::Probes
-        },
-        border_color: Some(
-            [
-                BorderColor::TransparentBlack,
-                BorderColor::OpaqueBlack,
-                BorderColor::OpaqueWhite,
-                BorderColor::Zero,
-            ][usize::from(modes >> 6)],
-        ),
+        border_color: Some(border(modes >> 6)),
         compare,
         lod_bias: f(12),
         lod_min_clamp: f(13),
-        ..SamplerDescriptor::default()
+        ..filtering(filters)
     };
     Textures3dInput {
         descriptor,
