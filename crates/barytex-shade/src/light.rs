@@ -160,6 +160,13 @@ impl Light {
 /// (the distance too: points more than `f32::MAX` apart).
 fn towards(from: Vec3, to: Vec3) -> Option<(Vec3, f32)> {
     let d = to - from;
+    let squared = d.length_squared();
+    if squared.is_normal() {
+        // The common case, on every shaded pixel: the squared length neither underflowed nor
+        // overflowed, so one square root gives both.
+        let distance = squared.sqrt();
+        return Some((d / distance, distance));
+    }
     let to_light = unit(d)?;
     // |d| = m·|d/m| with m the largest component: no underflow for subnormal offsets.
     let m = d.abs().max_element();
@@ -170,10 +177,13 @@ fn towards(from: Vec3, to: Vec3) -> Option<(Vec3, f32)> {
     Some((to_light, distance))
 }
 
-/// `v / |v|`, `None` for a zero or non-finite `v`. Scaled by the largest component first, so the
-/// squared length neither underflows (a direction of length 1e-22 normalized through glam's
-/// `try_normalize` came out 0.1 % too long: its square is subnormal) nor overflows.
+/// `v / |v|`, `None` for a zero or non-finite `v`. When the squared length underflows or
+/// overflows, `v` is scaled by its largest component first (a direction of length 1e-22
+/// normalized through its subnormal square came out 0.1 % too long).
 fn unit(v: Vec3) -> Option<Vec3> {
+    if v.length_squared().is_normal() {
+        return v.try_normalize();
+    }
     let m = v.abs().max_element();
     if !(m.is_finite() && m > 0.0) {
         return None;

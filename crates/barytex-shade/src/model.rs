@@ -216,11 +216,18 @@ impl PhongMaterial {
             return out;
         }
         for light in lights {
-            if let Some(sample) = light.sample(p) {
-                let (d, s) = self.reflect(n, v, &sample);
-                out.diffuse += d;
-                out.specular += s;
+            let Some(sample) = light.sample(p) else {
+                continue;
+            };
+            // A light that does not reach the point (outside its cone or range) or lights it
+            // from behind adds exactly zero: skip the lobe's normalization and power, the
+            // costly part of a shaded pixel.
+            if sample.intensity == Vec3::ZERO || n.dot(sample.to_light) <= 0.0 {
+                continue;
             }
+            let (d, s) = self.reflect(n, v, &sample);
+            out.diffuse += d;
+            out.specular += s;
         }
         out
     }
