@@ -108,8 +108,16 @@ pub fn linear_taps(u: f32, size: u32) -> LinearTaps {
 #[inline]
 pub fn wrap(i: i64, size: u32, mode: AddressMode) -> Option<u32> {
     let size = i64::from(size.max(1));
+    // An index inside the texture is its own address under every mode (for the mirror:
+    // `i − size ∈ [−size, 0)` mirrors to `size − 1 − i`, which maps back to `i`). Most taps of
+    // a lookup are inside, and this spares them the 64-bit divisions below.
+    if (0..size).contains(&i) {
+        return Some(i as u32);
+    }
     let wrapped = match mode {
         AddressMode::ClampToEdge => i.clamp(0, size - 1),
+        // Two's complement: for a power-of-two size the low bits are the Euclidean remainder.
+        AddressMode::Repeat if size & (size - 1) == 0 => i & (size - 1),
         AddressMode::Repeat => i.rem_euclid(size),
         AddressMode::MirrorRepeat => {
             let t = i.rem_euclid(2 * size) - size;
@@ -174,6 +182,58 @@ mod tests {
             }
         }
         assert_eq!(floor(f64::NAN).0, 0);
+    }
+
+    /// The specification's formulas with no shortcut (the in-range and power-of-two paths of
+    /// `wrap` must agree with them).
+    fn wrap_by_formula(i: i64, size: u32, mode: AddressMode) -> Option<u32> {
+        let size = i64::from(size.max(1));
+        let wrapped = match mode {
+            AddressMode::ClampToEdge => i.clamp(0, size - 1),
+            AddressMode::Repeat => i.rem_euclid(size),
+            AddressMode::MirrorRepeat => {
+                let t = i.rem_euclid(2 * size) - size;
+                (size - 1) - if t >= 0 { t } else { -(1 + t) }
+            }
+            AddressMode::ClampToBorder => {
+                if (0..size).contains(&i) {
+                    i
+                } else {
+                    return None;
+                }
+            }
+        };
+        u32::try_from(wrapped).ok()
+    }
+
+    #[test]
+    fn shortcuts_agree_with_the_formulas() {
+        let modes = [
+            AddressMode::ClampToEdge,
+            AddressMode::Repeat,
+            AddressMode::MirrorRepeat,
+            AddressMode::ClampToBorder,
+        ];
+        let sizes = [0, 1, 2, 3, 4, 5, 7, 8, 16, 31, 64, 1 << 20, u32::MAX];
+        let extremes = [
+            i64::MIN,
+            i64::MIN + 1,
+            -(1 << 40),
+            1 << 40,
+            i64::MAX - 1,
+            i64::MAX,
+        ];
+        for mode in modes {
+            for size in sizes {
+                for i in (-300..300).chain(extremes) {
+                    assert_eq!(
+                        wrap(i, size, mode),
+                        wrap_by_formula(i, size, mode),
+                        "{mode:?} size {size} index {i}"
+                    );
+                }
+            }
+        }
     }
 
     #[test]

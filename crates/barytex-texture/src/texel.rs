@@ -143,10 +143,22 @@ pub struct Rgba32f(pub [f32; 4]);
 #[repr(transparent)]
 pub struct R32f(pub f32);
 
+/// `b / 255` for every byte, each the f32 nearest the quotient (IEEE division is correctly
+/// rounded, in constant evaluation as at run time): a load instead of a division per channel.
+const UNORM8: [f32; 256] = {
+    let mut table = [0.0; 256];
+    let mut b = 0;
+    while b < 256 {
+        table[b] = b as f32 / 255.0;
+        b += 1;
+    }
+    table
+};
+
 /// Byte → [0, 1], exact division (the f32 nearest `b / 255`).
 #[inline]
 fn unorm8_to_f32(b: u8) -> f32 {
-    f32::from(b) / 255.0
+    UNORM8[usize::from(b)]
 }
 
 /// [0, 1] → nearest byte; NaN → 0.
@@ -308,6 +320,13 @@ mod tests {
 
     fn round_trips<T: Texel + PartialEq>(texel: T) {
         assert_eq!(T::from_linear(texel.to_linear()), texel, "{texel:?}");
+    }
+
+    #[test]
+    fn the_unorm8_table_is_the_division() {
+        for b in 0..=255_u8 {
+            assert_eq!(unorm8_to_f32(b).to_bits(), (f32::from(b) / 255.0).to_bits());
+        }
     }
 
     #[test]

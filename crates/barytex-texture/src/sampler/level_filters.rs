@@ -3,9 +3,9 @@
 
 use glam::{Vec2, Vec4};
 
-use crate::addressing::{linear_taps, nearest_index};
+use crate::addressing::{linear_taps, nearest_index, wrap};
 use crate::sampler::CubicKernel;
-use crate::sampler::texel_fetch::{Addressing, fetch};
+use crate::sampler::texel_fetch::{Addressing, fetch, fetch_wrapped};
 use crate::{Texel, Texture2d};
 
 /// The texel containing `uv` (`⌊u·w⌋`, `⌊v·h⌋`).
@@ -25,13 +25,14 @@ pub(crate) fn bilinear<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing)
     let (w, h) = level.size();
     let tx = linear_taps(uv.x, w);
     let ty = linear_taps(uv.y, h);
-    let (x0, y0) = (tx.i0, ty.i0);
-    let c00 = fetch(level, x0, y0, a);
-    // Saturating: a saturated index's neighbour is itself.
-    let (x1, y1) = (x0.saturating_add(1), y0.saturating_add(1));
-    let c10 = fetch(level, x1, y0, a);
-    let c01 = fetch(level, x0, y1, a);
-    let c11 = fetch(level, x1, y1, a);
+    // Each axis index is wrapped once, not once per tap. Saturating: a saturated index's
+    // neighbour is itself.
+    let (x0, x1) = (wrap(tx.i0, w, a.u), wrap(tx.i0.saturating_add(1), w, a.u));
+    let (y0, y1) = (wrap(ty.i0, h, a.v), wrap(ty.i0.saturating_add(1), h, a.v));
+    let c00 = fetch_wrapped(level, x0, y0, a);
+    let c10 = fetch_wrapped(level, x1, y0, a);
+    let c01 = fetch_wrapped(level, x0, y1, a);
+    let c11 = fetch_wrapped(level, x1, y1, a);
     let top = c00 + (c10 - c00) * tx.frac;
     let bottom = c01 + (c11 - c01) * tx.frac;
     top + (bottom - top) * ty.frac

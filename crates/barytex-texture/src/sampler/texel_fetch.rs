@@ -67,10 +67,23 @@ pub(crate) fn unpremultiply(c: Vec4) -> Vec4 {
 #[inline]
 pub(crate) fn fetch<T: Texel>(texture: &Texture2d<T>, x: i64, y: i64, a: &Addressing) -> Vec4 {
     let (w, h) = texture.size();
-    match (wrap(x, w, a.u), wrap(y, h, a.v)) {
-        (Some(x), Some(y)) => {
-            premultiply(texture.texels()[y as usize * w as usize + x as usize].to_linear())
-        }
+    fetch_wrapped(texture, wrap(x, w, a.u), wrap(y, h, a.v), a)
+}
+
+/// Texel `(x, y)` of `texture` at indices already wrapped (`None`: outside, the border),
+/// premultiplied linear.
+#[must_use]
+#[inline]
+pub(crate) fn fetch_wrapped<T: Texel>(
+    texture: &Texture2d<T>,
+    x: Option<u32>,
+    y: Option<u32>,
+    a: &Addressing,
+) -> Vec4 {
+    match (x, y) {
+        (Some(x), Some(y)) => premultiply(
+            texture.texels()[y as usize * texture.width() as usize + x as usize].to_linear(),
+        ),
         _ => a.border,
     }
 }

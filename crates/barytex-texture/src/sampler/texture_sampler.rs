@@ -55,6 +55,41 @@ pub struct TextureSampler<T> {
     chain: MipChain<T>,
     descriptor: SamplerDescriptor,
     addressing: Addressing,
+    /// The lookup resolved once, when sampler and texture meet.
+    path: LookupPath,
+}
+
+/// Which lookup a sampler runs: the common configurations get a short path the compiler can
+/// inline into the caller's loop; everything else takes the general one. Every path computes
+/// exactly what the general path computes for its configuration (same formulas, same order).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum LookupPath {
+    /// One level, nearest for magnification and minification, no anisotropy: every level of
+    /// detail gives the same result, so it is never computed.
+    SingleLevelNearest,
+    /// One level, bilinear for magnification and minification, no anisotropy.
+    SingleLevelBilinear,
+    /// Bilinear within levels, linear between them, no anisotropy (trilinear).
+    Trilinear,
+    /// Anything else.
+    General,
+}
+
+impl LookupPath {
+    fn of(d: &SamplerDescriptor, levels: usize) -> Self {
+        let filter = (d.mag_filter == d.min_filter).then_some(d.mag_filter);
+        match (
+            filter,
+            d.anisotropy_clamp <= 1,
+            levels == 1,
+            d.mipmap_filter,
+        ) {
+            (Some(FilterMode::Nearest), true, true, _) => Self::SingleLevelNearest,
+            (Some(FilterMode::Linear), true, true, _) => Self::SingleLevelBilinear,
+            (Some(FilterMode::Linear), true, false, MipmapFilterMode::Linear) => Self::Trilinear,
+            _ => Self::General,
+        }
+    }
 }
 
 impl<T: Texel> TextureSampler<T> {
@@ -82,10 +117,12 @@ impl<T: Texel> TextureSampler<T> {
     pub fn new(chain: MipChain<T>, descriptor: SamplerDescriptor) -> Self {
         let d = descriptor.sanitized();
         let addressing = Addressing::new(d.address_mode_u, d.address_mode_v, d.border_color);
+        let path = LookupPath::of(&d, chain.len());
         Self {
             chain,
             descriptor: d,
             addressing,
+            path,
         }
     }
 
@@ -196,10 +233,33 @@ impl<T: Texel> TextureSampler<T> {
         }
     }
 
+    #[inline]
     fn sample_biased(&self, uv: Vec2, ddx: Vec2, ddy: Vec2, bias: f32) -> Vec4 {
         if !uv.is_finite() {
             return Vec4::ZERO;
         }
+        let levels = self.chain.levels();
+        match self.path {
+            // Level 0 under the one filter whatever the footprint (see `across_levels`).
+            LookupPath::SingleLevelNearest => {
+                unpremultiply(level_filters::nearest(&levels[0], uv, &self.addressing))
+            }
+            LookupPath::SingleLevelBilinear => {
+                unpremultiply(level_filters::bilinear(&levels[0], uv, &self.addressing))
+            }
+            LookupPath::Trilinear => {
+                let lod = self.clamp_lod(lod::lod(ddx, ddy, self.chain.base().size()) + bias);
+                unpremultiply(self.across_levels(lod, |level, _| {
+                    level_filters::bilinear(&levels[level], uv, &self.addressing)
+                }))
+            }
+            LookupPath::General => self.sample_general(uv, ddx, ddy, bias),
+        }
+    }
+
+    /// Every configuration: anisotropic probes or EWA, cubic, mixed filters.
+    #[inline(never)]
+    fn sample_general(&self, uv: Vec2, ddx: Vec2, ddy: Vec2, bias: f32) -> Vec4 {
         let d = &self.descriptor;
         if d.anisotropy_clamp > 1 {
             let footprint = anisotropic::Footprint::new(ddx, ddy, self.chain.base().size());
@@ -238,6 +298,7 @@ impl<T: Texel> TextureSampler<T> {
 
     /// Vulkan's level selection and blending at a (biased, clamped) LOD around an in-level
     /// filter `filter_level(level, filter)`.
+    #[inline]
     fn across_levels(&self, lod: f32, filter_level: impl Fn(usize, FilterMode) -> Vec4) -> Vec4 {
         let d = &self.descriptor;
         if lod <= 0.0 {
@@ -359,6 +420,7 @@ fn to_level(level: f32, last: usize) -> usize {
 }
 
 impl<T: Texel> Sampler for TextureSampler<T> {
+    #[inline]
     fn sample(&self, uv: Vec2, ddx: Vec2, ddy: Vec2) -> Vec4 {
         self.sample_biased(uv, ddx, ddy, 0.0)
     }

@@ -1,0 +1,124 @@
+//! The sampler resolves a short lookup path for nearest, bilinear and trilinear configurations
+//! when it is built. Each must return, bit for bit, what the general machinery returns: the
+//! level of detail computed from the derivatives (`TextureSampler::lod`) and then
+//! `sample_level`, which selects and blends levels through the general filter dispatch.
+
+use barytex_texture::sampler::{AddressMode, BorderColor, FilterMode, MipmapFilterMode};
+use barytex_texture::{
+    MipChain, MipOptions, Sampler, SamplerDescriptor, Srgba8, Texture2d, TextureSampler,
+};
+use glam::{Vec2, Vec4};
+use proptest::prelude::*;
+
+const ADDRESS_MODES: [AddressMode; 4] = [
+    AddressMode::ClampToEdge,
+    AddressMode::Repeat,
+    AddressMode::MirrorRepeat,
+    AddressMode::ClampToBorder,
+];
+
+/// Translucent sRGB texels (premultiplying matters), from a seed.
+fn texture(w: u32, h: u32, seed: u64) -> Texture2d<Srgba8> {
+    let mut state = seed | 1;
+    Texture2d::from_fn(w, h, |_, _| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        let b = state.to_le_bytes();
+        Srgba8([b[0], b[1], b[2], b[3]])
+    })
+    .expect("small")
+}
+
+fn bits(c: Vec4) -> [u32; 4] {
+    c.to_array().map(f32::to_bits)
+}
+
+/// The short paths' configurations, each over one level and over a full chain.
+fn configurations() -> Vec<SamplerDescriptor> {
+    let mut out = Vec::new();
+    for filter in [FilterMode::Nearest, FilterMode::Linear] {
+        for mipmap_filter in [MipmapFilterMode::Nearest, MipmapFilterMode::Linear] {
+            out.push(SamplerDescriptor {
+                mag_filter: filter,
+                min_filter: filter,
+                mipmap_filter,
+                border_color: Some(BorderColor::OpaqueWhite),
+                ..SamplerDescriptor::default()
+            });
+        }
+    }
+    // Clamps (no bias: `lod` applies the descriptor's bias and `sample_level` would apply it
+    // again, while clamping twice changes nothing).
+    out.push(SamplerDescriptor {
+        lod_min_clamp: 0.5,
+        lod_max_clamp: 2.25,
+        ..SamplerDescriptor::trilinear()
+    });
+    out
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn short_paths_equal_the_general_path(
+        w in 1_u32..40,
+        h in 1_u32..40,
+        seed in any::<u64>(),
+        mode_u in 0_usize..4,
+        mode_v in 0_usize..4,
+        uv in (-3.0_f32..3.0, -3.0_f32..3.0),
+        ddx in (-0.5_f32..0.5, -0.5_f32..0.5),
+        ddy in (-0.5_f32..0.5, -0.5_f32..0.5),
+    ) {
+        let base = texture(w, h, seed);
+        let chain = MipChain::generate(base.clone(), &MipOptions::default()).expect("small");
+        let (uv, ddx, ddy) = (Vec2::from(uv), Vec2::from(ddx), Vec2::from(ddy));
+        for descriptor in configurations() {
+            let descriptor = SamplerDescriptor {
+                address_mode_u: ADDRESS_MODES[mode_u],
+                address_mode_v: ADDRESS_MODES[mode_v],
+                ..descriptor
+            };
+            for levels in [MipChain::single(base.clone()), chain.clone()] {
+                let sampler = TextureSampler::new(levels, descriptor);
+                let lod = sampler.lod(ddx, ddy, 0.0);
+                prop_assert_eq!(
+                    bits(sampler.sample(uv, ddx, ddy)),
+                    bits(sampler.sample_level(uv, lod)),
+                    "{:?}, {} levels, lod {}", descriptor, sampler.chain().len(), lod
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn short_paths_keep_the_documented_values_for_bad_input() {
+    let sampler = TextureSampler::single_level(texture(4, 4, 7), SamplerDescriptor::bilinear());
+    assert_eq!(
+        sampler.sample(Vec2::NAN, Vec2::ZERO, Vec2::ZERO),
+        Vec4::ZERO
+    );
+    assert_eq!(
+        sampler.sample(Vec2::new(f32::INFINITY, 0.5), Vec2::ZERO, Vec2::ZERO),
+        Vec4::ZERO
+    );
+    // A NaN derivative on a one-level sampler still reads level 0 (there is no other).
+    let at_nan = sampler.sample(Vec2::splat(0.3), Vec2::NAN, Vec2::ZERO);
+    assert_eq!(
+        bits(at_nan),
+        bits(sampler.sample_level(Vec2::splat(0.3), 0.0))
+    );
+    // Huge coordinates wrap without panicking.
+    let repeat = TextureSampler::single_level(
+        texture(3, 5, 9),
+        SamplerDescriptor::bilinear().with_address_mode(AddressMode::Repeat),
+    );
+    assert!(
+        repeat
+            .sample(Vec2::splat(3.0e38), Vec2::ZERO, Vec2::ZERO)
+            .is_finite()
+    );
+}
