@@ -3,6 +3,7 @@
 //! optional alpha-coverage preservation.
 
 mod alpha_coverage;
+mod cascade;
 mod plane;
 mod polyphase_box;
 mod windowed_sinc;
@@ -156,28 +157,66 @@ impl<T: Texel> MipChain<T> {
         levels
             .try_reserve_exact(count)
             .map_err(|_| TextureError::OutOfMemory { bytes: total })?;
-        let mut previous: Option<Plane> = None;
-        for _ in 1..count {
-            let plane = match &previous {
-                None => reduce(
-                    &TexelSource {
-                        texture: &base,
-                        linear,
-                    },
-                    options.filter,
-                )?,
-                Some(p) => reduce(p, options.filter)?,
+        let reduced =
+            if options.filter == MipFilter::Box && w.is_power_of_two() && h.is_power_of_two() {
+                cascade_levels(&base, count, linear)?
+            } else {
+                plane_levels(&base, count, linear, options.filter)?
             };
-            let mut level = plane.to_texture::<T>(linear)?;
+        for mut level in reduced {
             if let Some((reference, target)) = coverage_target {
                 alpha_coverage::preserve(&mut level, reference, target);
             }
             levels.push(level);
-            previous = Some(plane);
         }
         levels.insert(0, base);
         MipChain::from_levels(levels)
     }
+}
+
+/// Levels `1..count` of a power-of-two box chain in one streaming pass (bit-identical to
+/// [`plane_levels`]: `tests::cascade_equals_the_plane_path`).
+fn cascade_levels<T: Texel>(
+    base: &Texture2d<T>,
+    count: usize,
+    linear: bool,
+) -> Result<Vec<Texture2d<T>>, TextureError> {
+    if linear {
+        cascade::reduce_chain(
+            base,
+            count,
+            |t: T| premultiply(t.to_linear()),
+            |v| T::from_linear(unpremultiply(v)),
+        )
+    } else {
+        cascade::reduce_chain(base, count, T::to_stored, T::from_stored)
+    }
+}
+
+/// Levels `1..count` of any chain, each reduced from the previous level's f32 plane.
+fn plane_levels<T: Texel>(
+    base: &Texture2d<T>,
+    count: usize,
+    linear: bool,
+    filter: MipFilter,
+) -> Result<Vec<Texture2d<T>>, TextureError> {
+    let mut levels = Vec::new();
+    let mut previous: Option<Plane> = None;
+    for _ in 1..count {
+        let plane = match &previous {
+            None => reduce(
+                &TexelSource {
+                    texture: base,
+                    linear,
+                },
+                filter,
+            )?,
+            Some(p) => reduce(p, filter)?,
+        };
+        levels.push(plane.to_texture::<T>(linear)?);
+        previous = Some(plane);
+    }
+    Ok(levels)
 }
 
 /// Something a reduction can read: a texture (converting on the fly) or a working plane.
@@ -251,5 +290,85 @@ impl Plane {
             texels.extend(self.values.iter().map(|&v| T::from_stored(v)));
         }
         Texture2d::from_texels_with_limits(self.width, self.height, texels, &Limits::UNLIMITED)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Rgba32f, Srgba8};
+
+    fn bits<T: Texel>(levels: &[Texture2d<T>]) -> Vec<Vec<[u32; 4]>> {
+        levels
+            .iter()
+            .map(|l| {
+                l.texels()
+                    .iter()
+                    .map(|t| t.to_stored().to_array().map(f32::to_bits))
+                    .collect()
+            })
+            .collect()
+    }
+
+    fn random_bytes(seed: u64) -> impl FnMut() -> [u8; 8] {
+        let mut state = seed | 1;
+        move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state.to_le_bytes()
+        }
+    }
+
+    /// The streaming cascade against the plane path, bit for bit, on every power-of-two shape
+    /// up to 64 on a side (1×N and N×1 take the copy taps), in both colour spaces, for 8-bit
+    /// sRGB and for float texels including zero, huge and non-finite values.
+    #[test]
+    fn cascade_equals_the_plane_path() {
+        let sides = [1, 2, 4, 8, 16, 64];
+        let specials = [0.0, -0.0, 1e30, -3.5, f32::INFINITY, f32::NAN, 1e-40];
+        for (k, (&w, &h)) in sides
+            .iter()
+            .flat_map(|w| sides.iter().map(move |h| (w, h)))
+            .enumerate()
+        {
+            let mut next = random_bytes(k as u64 + 1);
+            let srgb = Texture2d::from_fn(w, h, |_, _| {
+                let b = next();
+                Srgba8([b[0], b[1], b[2], b[3]])
+            })
+            .expect("small");
+            let mut next = random_bytes(k as u64 + 99);
+            let float = Texture2d::from_fn(w, h, |x, y| {
+                let b = next();
+                let special = specials[usize::from(b[4]) % specials.len()];
+                let v = f32::from(b[0]) / 37.0;
+                Rgba32f(if (x + y) % 5 == 0 {
+                    [special, v, v, f32::from(b[1]) / 255.0]
+                } else {
+                    [v, v * 0.5, 1.0 - v, f32::from(b[2]) / 255.0]
+                })
+            })
+            .expect("small");
+            let count = crate::mip_chain::full_length(w, h);
+            for linear in [true, false] {
+                assert_eq!(
+                    bits(&cascade_levels(&srgb, count, linear).expect("small")),
+                    bits(&plane_levels(&srgb, count, linear, MipFilter::Box).expect("small")),
+                    "sRGB {w}×{h} linear {linear}"
+                );
+                assert_eq!(
+                    bits(&cascade_levels(&float, count, linear).expect("small")),
+                    bits(&plane_levels(&float, count, linear, MipFilter::Box).expect("small")),
+                    "float {w}×{h} linear {linear}"
+                );
+            }
+            // A shorter chain (max_levels) stops the cascade early.
+            let short = count.min(2);
+            assert_eq!(
+                bits(&cascade_levels(&srgb, short, true).expect("small")),
+                bits(&plane_levels(&srgb, short, true, MipFilter::Box).expect("small")),
+            );
+        }
     }
 }
