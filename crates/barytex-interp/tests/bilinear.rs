@@ -515,7 +515,7 @@ fn inverse_bilinear_2d_within_its_condition_bound() {
     let mut rng = barytex_testkit::seeded::XorShift::new(0x1b2d);
     let (mut worst_ratio, mut worst_kappa, mut worst_error) = (0.0f64, 0.0f64, 0.0f64);
     for i in 0..20_000 {
-        let squeeze = 10f32.powi(-((i % 6) as i32)); // 1 … 1e-5
+        let squeeze = 10f32.powi(-(i % 6)); // 1 … 1e-5
         let offset = Vec2::new(rng.f32_in(-1e3, 1e3), rng.f32_in(-1e3, 1e3));
         let quad = [
             Vec2::new(0.0, 0.0),

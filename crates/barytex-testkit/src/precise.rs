@@ -116,7 +116,7 @@ fn sin_cos(x: &Fixed, pi: &Fixed) -> (Fixed, Fixed) {
     let two_pi = pi.add(pi);
     let shifted = x.add(pi).0;
     let mut turns = &shifted / &two_pi.0;
-    if shifted.is_negative() && !(&turns * &two_pi.0 == shifted) {
+    if shifted.is_negative() && &turns * &two_pi.0 != shifted {
         turns -= 1;
     }
     let x = Fixed(&x.0 - turns * &two_pi.0);
