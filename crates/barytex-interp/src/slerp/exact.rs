@@ -318,8 +318,9 @@ pub trait SlerpAlong: Slerp {
 ///
 /// # Special values
 /// - `a == b`: `a` for every `t`.
-/// - `a` and `b` in opposite directions (to rounding): the arc through the deterministic
-///   perpendicular of `a` — the counter-clockwise perpendicular in 2D, glam's
+/// - `a` and `b` in opposite directions — for the f32 types exactly (decided from the exact
+///   inputs: `b = −c·a` with `c > 0`), for the f64 types to rounding — : the arc through the
+///   deterministic perpendicular of `a` — the counter-clockwise perpendicular in 2D, glam's
 ///   `any_orthonormal_vector` in 3D, `(y, −x, w, −z)` in 4D (for a quaternion `a` on the
 ///   [`QuatPath::AsGiven`] path: the full turn about the local z axis of `a`, through `a·k`).
 /// - Quaternions: `b` is negated when `a·b < 0` (then `t = 1` returns `−b` exactly).
