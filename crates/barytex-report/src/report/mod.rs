@@ -461,7 +461,13 @@ fn render_index(options: &Options, sections: &[Section], pages: &[&Section]) -> 
     let _ = writeln!(
         out,
         "| [shading.md](shading.md) | speed vs error of the shading frequencies (flat, Gouraud, \
-         Phong, the H-test hybrid, fast Phong) and of normal interpolation |\n"
+         Phong, the H-test hybrid, fast Phong) and of normal interpolation |"
+    );
+    let _ = writeln!(
+        out,
+        "| [peers.md](peers.md) | the hot paths beside peers and same-result kernels in \
+         criterion runs (lookups, mips, remap, SLERP, the demo frame); run by hand from \
+         `benches/`, not by this tool |\n"
     );
     let _ = writeln!(
         out,
