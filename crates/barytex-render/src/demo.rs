@@ -433,6 +433,7 @@ pub fn demo_scene() -> Scene {
         // The demo's images are generated, not decoded.
         decode_seconds: 0.0,
         environment: sky(),
+        portals: Vec::new(),
         stats: barytex_gltf::scene::SceneStats {
             meshes_loaded: 5,
             primitives_loaded: 5,
