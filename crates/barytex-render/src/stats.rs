@@ -53,6 +53,17 @@ pub struct RenderStats {
     /// the shading's cost.
     /// Alpha-masked fragments are not discarded in that pass, so it may do slightly more work.
     pub raster_seconds: Option<f64>,
+    /// Views drawn through portals and mirrors, summed over passes.
+    pub portal_views: u64,
+    /// Portals seen but drawn closed (the background under the tint), summed over passes: at
+    /// the [`portal_depth`](crate::RenderOptions::portal_depth) limit, past the
+    /// [`MAX_PORTAL_VIEWS_PER_PASS`](crate::MAX_PORTAL_VIEWS_PER_PASS) budget, or seen so
+    /// nearly edge-on that no oblique frustum exists.
+    pub portals_closed: u64,
+    /// The scene's portals that are not drawn because they fail
+    /// [`Portal::check`](barytex_gltf::Portal::check) (degenerate, non-planar, non-convex,
+    /// non-finite, singular).
+    pub portals_skipped: usize,
 }
 
 impl RenderStats {
@@ -82,6 +93,9 @@ impl RenderStats {
             mip_seconds: prepared.textures.mip_seconds,
             draw_seconds: drawn.draw_seconds,
             raster_seconds: drawn.raster_seconds,
+            portal_views: drawn.portal_views.drawn,
+            portals_closed: drawn.portal_views.closed,
+            portals_skipped: prepared.portals_skipped,
         }
     }
 }

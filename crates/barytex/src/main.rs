@@ -5,7 +5,7 @@
 //!   takes the render options).
 //! - `barytex render FILE [--scene N] [--camera N|auto] [--size WxH] [--shading unlit|phong]
 //!   [--filter …] [--aa …] [--background COLOUR] [--threads N] [-o OUT.png] [--print-camera]
-//!   [--stats] [--allow-dir DIR]…`: a glTF/GLB (its URIs read only files under its folder and
+//!   [--stats] [--portal-depth N] [--allow-dir DIR]…`: a glTF/GLB (its URIs read only files under its folder and
 //!   each DIR). `--camera N` is the document's `cameras[N]`; `--list-cameras` lists them and
 //!   where the scene places them, and renders nothing.
 //! - `barytex examples`: the worked examples of Buss, *3D Computer Graphics* (2003), ch. IV,
@@ -74,6 +74,11 @@ struct RenderArgs {
     /// adaptive:N (up to N samples where needed).
     #[arg(long, value_parser = render_cmd::parse_aa)]
     aa: Option<barytex_render::AntiAliasing>,
+    /// How many portals or mirrors deep a view may look (glTF nodes with
+    /// `extras.barytex_portal`, see docs/PORTALS.md), 0 to 16; 0 draws them closed.
+    #[arg(long, default_value_t = barytex_render::RenderOptions::default().portal_depth,
+          value_parser = render_cmd::parse_portal_depth)]
+    portal_depth: u32,
     /// Worker threads, at most 1024 (absent or 0: all cores); the image is the same for any
     /// count.
     #[arg(long, value_parser = render_cmd::parse_threads)]
@@ -133,6 +138,7 @@ impl RenderArgs {
             threads: None,
             print_camera: false,
             stats: false,
+            portal_depth: demo.portal_depth,
         }
     }
 
@@ -168,6 +174,7 @@ impl RenderArgs {
                     }),
                 background,
                 measure_stages: false,
+                portal_depth: self.portal_depth,
             },
             threads: self.threads,
             out,
