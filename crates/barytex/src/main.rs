@@ -2,7 +2,7 @@
 //!
 //! - `barytex` (what `cargo run --release` runs): renders the built-in demo scene to
 //!   `barytex-demo.png` and prints where it went and how long each stage took (`barytex demo`
-//!   takes the render options).
+//!   takes the render options, and `--mirror` for the demo with a standing mirror).
 //! - `barytex render FILE [--scene N] [--camera N|auto] [--size WxH] [--shading unlit|phong]
 //!   [--filter …] [--aa …] [--background COLOUR] [--threads N] [-o OUT.png] [--print-camera]
 //!   [--stats] [--portal-depth N] [--allow-dir DIR]…`: a glTF/GLB (its URIs read only files under its folder and
@@ -117,6 +117,10 @@ struct DemoArgs {
     /// The PNG to write.
     #[arg(short, long, default_value = "barytex-demo.png")]
     out: PathBuf,
+    /// Stand a framed mirror behind the objects (a portal drawn through an oblique near plane;
+    /// see docs/PORTALS.md).
+    #[arg(long)]
+    mirror: bool,
     #[command(flatten)]
     render: RenderArgs,
 }
@@ -154,6 +158,7 @@ impl RenderArgs {
             None => barytex_render::RenderOptions::default().background,
         };
         Ok(render_cmd::Options {
+            demo_mirror: false,
             file,
             scene,
             allowed_roots,
@@ -285,6 +290,10 @@ fn main() -> ExitCode {
             };
             render
                 .options(None, None, Vec::new(), args.out)
+                .map(|options| render_cmd::Options {
+                    demo_mirror: args.mirror,
+                    ..options
+                })
                 .map_err(Into::into)
                 .and_then(|options| render_cmd::run(&options))
         }

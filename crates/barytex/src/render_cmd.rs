@@ -16,6 +16,8 @@ use glam::{Vec3, Vec4};
 pub(crate) struct Options {
     /// The glTF/GLB file; `None` renders the built-in demo scene.
     pub(crate) file: Option<PathBuf>,
+    /// The demo scene with its standing mirror (`barytex demo --mirror`).
+    pub(crate) demo_mirror: bool,
     /// Which of the file's scenes.
     pub(crate) scene: Option<usize>,
     /// Folders besides the file's own that its URIs may read (`--allow-dir`).
@@ -215,6 +217,7 @@ pub(crate) fn parse_fog(text: &str) -> Result<f32, String> {
 fn load(options: &Options) -> Result<(Scene, f64), Box<dyn std::error::Error>> {
     let started = Instant::now();
     let scene = match &options.file {
+        None if options.demo_mirror => barytex_render::demo::demo_scene_with_mirror(),
         None => barytex_render::demo::demo_scene(),
         Some(path) => load_path(
             path,
@@ -369,7 +372,13 @@ impl Drop for Progress {
 /// What is rendered, for messages: the file, or the demo scene.
 fn what(options: &Options) -> String {
     options.file.as_ref().map_or_else(
-        || "the built-in demo scene".to_owned(),
+        || {
+            if options.demo_mirror {
+                "the built-in demo scene with a mirror".to_owned()
+            } else {
+                "the built-in demo scene".to_owned()
+            }
+        },
         |p| p.display().to_string(),
     )
 }
