@@ -13,7 +13,8 @@ pub struct RenderStats {
     /// Triangles submitted per pass (point and line primitives are counted in `draw`'s
     /// `points_in` and `lines_in`).
     pub triangles: usize,
-    /// Fragment and triangle counts, summed over passes.
+    /// Fragment and triangle counts of the scene's items as the camera sees them, summed over
+    /// passes (what portals draw is in [`portal_draw`](Self::portal_draw)).
     pub draw: DrawStats,
     /// Passes over the scene (more than one for accumulated and adaptive supersampling).
     pub passes: u32,
@@ -55,6 +56,9 @@ pub struct RenderStats {
     pub raster_seconds: Option<f64>,
     /// Views drawn through portals and mirrors, summed over passes.
     pub portal_views: u64,
+    /// Fragment and triangle counts of what the portals drew — the scene in the views through
+    /// them, and their surfaces — summed over passes.
+    pub portal_draw: DrawStats,
     /// Portals seen but drawn closed (the background under the tint), summed over passes: at
     /// the [`portal_depth`](crate::RenderOptions::portal_depth) limit, past the
     /// [`MAX_PORTAL_VIEWS_PER_PASS`](crate::MAX_PORTAL_VIEWS_PER_PASS) budget, or seen so
@@ -94,6 +98,7 @@ impl RenderStats {
             draw_seconds: drawn.draw_seconds,
             raster_seconds: drawn.raster_seconds,
             portal_views: drawn.portal_views.drawn,
+            portal_draw: drawn.portal_views.draw,
             portals_closed: drawn.portal_views.closed,
             portals_skipped: prepared.portals_skipped,
         }

@@ -28,6 +28,8 @@ pub(crate) struct PortalViews {
     /// Portals seen at the depth limit (or past the per-pass view budget, or whose oblique
     /// frustum degenerates): their region shows the background.
     pub(crate) closed: u64,
+    /// What the portals drew: the views through them and their surfaces.
+    pub(crate) draw: DrawStats,
     /// Views drawn in the current pass (against [`MAX_PORTAL_VIEWS_PER_PASS`]).
     in_pass: u64,
 }
@@ -140,7 +142,9 @@ impl SceneDraw<'_> {
         stats
     }
 
-    /// Draws the scene as `view` sees it into `fb` (viewport moved by `shift`), portals and all.
+    /// Draws the scene as `view` sees it into `fb` (viewport moved by `shift`), portals and all;
+    /// returns what the scene's own items drew in this view (what the portals drew goes to
+    /// `portal_views`).
     ///
     /// # Errors
     /// A target or mask for a portal's view that cannot be allocated.
@@ -203,20 +207,17 @@ impl SceneDraw<'_> {
                     )?;
                     // Only the pixels the mask touches are rasterized and shaded.
                     inner.set_mask(Some(&|x, y| mask.pixel(x, y) != 0))?;
-                    stats += &self.draw_view(
-                        &mut inner,
-                        shift,
-                        raster_only,
-                        &inner_view,
-                        portal_views,
-                    )?;
+                    let seen =
+                        self.draw_view(&mut inner, shift, raster_only, &inner_view, portal_views)?;
+                    portal_views.draw += &seen;
                     fb.copy_samples(&inner, &mask)?;
                 }
                 None => {
                     // Closed: the background, on exactly the masked samples.
                     portal_views.closed += 1;
                     let background = surface(self.options.background);
-                    stats += &draw(fb, &background, &state, &portal.polygon, &portal.fan);
+                    let s = draw(fb, &background, &state, &portal.polygon, &portal.fan);
+                    portal_views.draw += &s;
                 }
             }
             // The surface: the tint over the view, and the portal's depth, so that what is
@@ -226,7 +227,7 @@ impl SceneDraw<'_> {
                 depth_write: true,
                 ..state
             };
-            stats += &draw(
+            portal_views.draw += &draw(
                 fb,
                 &surface(portal.tint),
                 &over,

@@ -280,12 +280,13 @@ fn print_stats(rendered: &Rendered, scene: &Scene, portal_depth: u32) {
     if !scene.portals.is_empty() {
         println!(
             "portals: {} in the scene, {} not drawable (degenerate); {} views drawn through them, \
-             {} seen closed (at --portal-depth {})",
+             {} seen closed (at --portal-depth {}); {} fragments shaded through them",
             scene.portals.len(),
             s.portals_skipped,
             s.portal_views,
             s.portals_closed,
-            portal_depth
+            portal_depth,
+            s.portal_draw.fragments_shaded
         );
     }
     if let Some(a) = &s.adaptive {
