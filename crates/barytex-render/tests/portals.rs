@@ -1,7 +1,8 @@
 //! Portals and mirrors, against renders that place the seen geometry by hand:
 //!
 //! - a mirror facing a textured, one-sided quad shows its reflection bit for bit as the quad
-//!   reflected by hand (a mirroring instance) with no mirror, under every anti-aliasing mode;
+//!   reflected by hand (a mirroring instance) with no mirror, under every anti-aliasing mode
+//!   and the mip-reading filters;
 //! - a portal between two rooms shows, inside its screen rectangle, bit for bit what the
 //!   equivalent camera sees of the second room (the rectangle as the scissor), and the first
 //!   room outside it; a tint lays its colour over that view;
@@ -232,8 +233,22 @@ fn a_mirror_shows_the_reflection_placed_by_hand() {
         camera,
         Vec::new(),
     );
-    for aa in ANTI_ALIASING {
-        let options = options(aa);
+    // Every anti-aliasing mode with bilinear filtering; the mip-reading filters (their level of
+    // detail from the exact derivatives) under MSAA and jitter.
+    let mip_filters = [Filter::Trilinear, Filter::Anisotropic(8), Filter::Ewa];
+    let cases = ANTI_ALIASING
+        .map(|aa| (aa, Filter::Bilinear))
+        .into_iter()
+        .chain(
+            mip_filters
+                .into_iter()
+                .flat_map(|f| [(AntiAliasing::Msaa(4), f), (AntiAliasing::Jitter(2), f)]),
+        );
+    for (aa, filter) in cases {
+        let options = RenderOptions {
+            filter,
+            ..options(aa)
+        };
         let mirrored = render(&with_mirror, &options).expect("renders");
         let expected = render(&by_hand, &options).expect("renders");
         let (a, b) = (bits(&mirrored), bits(&expected));
