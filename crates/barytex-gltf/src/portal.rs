@@ -198,7 +198,7 @@ impl Portal {
         // that neither its position nor its size under- or overflows them.
         let centre = p.iter().copied().sum::<Vec3>() / p.len() as f32;
         let scale = 1.0 / self.extent();
-        if !centre.is_finite() || !(scale.is_finite() && scale > 0.0) {
+        if !(centre.is_finite() && scale.is_finite() && scale > 0.0) {
             return None;
         }
         let mut normal = Vec3::ZERO;
@@ -213,8 +213,8 @@ impl Portal {
                 (a.x - b.x) * (a.y + b.y),
             );
         }
-        // Twice the area of the unit-extent polygon.
-        if !(normal.length() > 1e-6) {
+        // Twice the area of the unit-extent polygon (NaN fails too).
+        if normal.length().is_nan() || normal.length() <= 1e-6 {
             return None;
         }
         let n = normal.normalize();
@@ -289,7 +289,8 @@ impl Portal {
             return Err(PortalError::NotConvex);
         }
         let det = self.transform.determinant();
-        if !(det.abs() > f32::MIN_POSITIVE) || !self.transform.inverse().is_finite() {
+        let regular = det.abs() >= f32::MIN_POSITIVE && det.is_finite();
+        if !regular || !self.transform.inverse().is_finite() {
             return Err(PortalError::SingularTransform);
         }
         Ok(plane)

@@ -53,12 +53,12 @@ fn mirrors_reflect_about_their_world_plane() {
 #[test]
 fn targets_map_the_target_nodes_frame_onto_the_portals() {
     // The portal at z = −5 shows what is around node 2, 100 units along x (a child of node 1).
+    let portal = format!(
+        r#"{{"translation": [0, 0, -5], "extras": {{"barytex_portal": {{"polygon": {SQUARE},
+            "target": 2, "tint": [0.5, 0.5, 1, 0.25]}}}}}}"#
+    );
     let nodes = format!(
-        r#"{}, {{"translation": [100, 0, 0], "children": [2]}}, {{"translation": [0, 0, -5]}}"#,
-        format!(
-            r#"{{"translation": [0, 0, -5], "extras": {{"barytex_portal": {{"polygon": {SQUARE},
-                "target": 2, "tint": [0.5, 0.5, 1, 0.25]}}}}}}"#
-        )
+        r#"{portal}, {{"translation": [100, 0, 0], "children": [2]}}, {{"translation": [0, 0, -5]}}"#
     );
     let portals = load(&nodes, "0, 1").expect("loads");
     let p = &portals[0];
@@ -196,7 +196,7 @@ fn malformed_declarations_are_clear_errors() {
 #[test]
 fn the_portal_count_is_bounded() {
     let node = portal_node(r#""mirror": true"#);
-    let nodes = vec![node.as_str(); 5].join(", ");
+    let nodes = [node.as_str(); 5].join(", ");
     let roots = "0, 1, 2, 3, 4";
     assert_eq!(load(&nodes, roots).expect("loads").len(), 5);
     let options = LoadOptions {

@@ -135,7 +135,7 @@ impl View {
 /// of the original far plane as any oblique far plane can. `None` for a degenerate result.
 pub(crate) fn oblique(projection: Mat4, plane: Vec4) -> Option<Mat4> {
     // The eye (the origin) must be strictly on the hidden side.
-    if !(plane.w < 0.0) {
+    if plane.w.is_nan() || plane.w >= 0.0 {
         return None;
     }
     let inverse = projection.inverse();

@@ -662,7 +662,7 @@ impl Mix {
             6.0,
         ];
         let r = self.next();
-        if r % 5 == 0 {
+        if r.is_multiple_of(5) {
             SPECIAL[(r >> 8) as usize % SPECIAL.len()]
         } else {
             ((r >> 11) as f64 / (1u64 << 53) as f64 * 16.0 - 8.0) as f32
