@@ -39,6 +39,7 @@ import statistics
 import struct
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -422,13 +423,15 @@ def main():
         sys.exit("no scene to measure")
 
     gl = {}
+    jobs = tempfile.TemporaryDirectory()
     for t in threads:
         print(f"llvmpipe, LP_NUM_THREADS={t}, {args.frames} frames …", file=sys.stderr)
         job = {"size": size, "frames": args.frames, "warmup": args.warmup, "target": args.gl_target,
                "scenes": [{"name": s["name"], "path": s["path"], "view": s["barytex"][threads[0]]["view"],
                            "projection": s["barytex"][threads[0]]["projection"],
                            "png": str(out / f"{safe(s['name'])}-llvmpipe-t{t}.png")} for s in scenes]}
-        gl[t] = run_llvmpipe(t, job, out)
+        gl[t] = run_llvmpipe(t, job, jobs.name)
+    jobs.cleanup()
 
     rows = []
     for s in scenes:
@@ -441,6 +444,8 @@ def main():
         for t in threads:
             b, g = s["barytex"][t], gl[t]["scenes"][name]
             rows.append({"scene": name, "threads": t, "bx": b["frame_ms"], "gl": g["frame_ms"],
+                         "bx_range": (min(b["frames_ms"]), max(b["frames_ms"])),
+                         "gl_range": (min(g["frames_ms"]), max(g["frames_ms"])),
                          "ratio": b["frame_ms"] / g["frame_ms"], "mad": mad, "over8": over8,
                          "bx_stages": b["stages"], "gl_upload": g["upload_ms"], "gl_mips": g["mips_ms"],
                          "gl_decode": g["decode_ms"], "stable": stable_bx and stable_gl})
@@ -453,9 +458,10 @@ def main():
           f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} CPUs")
     print("\n".join(table))
     print()
-    print("scaling (frame at 1 thread ÷ frame at N):")
-    for line in scaling(rows, threads):
-        print("  " + line)
+    if len(threads) > 1:
+        print("scaling (frame at 1 thread ÷ frame at N):")
+        for line in scaling(rows, threads):
+            print("  " + line)
     print("\nnot in the frames (ms, medians): ")
     for r in rows:
         st = r["bx_stages"]
@@ -482,9 +488,10 @@ def render_table(rows):
     lines = ["| scene | threads | barytex frame ms | llvmpipe frame ms | ratio | mean abs. diff (sRGB8) "
              "| px > 8 apart |",
              "|---|---:|---:|---:|---:|---:|---:|"]
+    span = lambda lo_hi: f"({lo_hi[0]:.0f}–{lo_hi[1]:.0f})"
     for r in rows:
-        lines.append(f"| {r['scene']} | {r['threads']} | {r['bx']:.1f} | {r['gl']:.1f} | {r['ratio']:.2f}× "
-                     f"| {r['mad']:.3f} | {100 * r['over8']:.2f} % |")
+        lines.append(f"| {r['scene']} | {r['threads']} | {r['bx']:.1f} {span(r['bx_range'])} | {r['gl']:.1f} "
+                     f"{span(r['gl_range'])} | {r['ratio']:.2f}× | {r['mad']:.3f} | {100 * r['over8']:.2f} % |")
     return lines
 
 
@@ -511,13 +518,16 @@ def write_markdown(path, rows, threads, table, command, version, renderer, size,
         f"`shade` of `--stats` (median of {args.frames} processes, `--threads N`); llvmpipe frame: clear + "
         f"draws + glFinish + glReadPixels into a {'GL_SRGB8_ALPHA8' if args.gl_target == 'srgb8' else 'RGBA32F'} "
         f"target (median of {args.frames} frames after {args.warmup} warm-up, `LP_NUM_THREADS=N`). "
-        "Ratio: barytex ÷ llvmpipe (above 1: barytex slower). Mean absolute difference over every "
+        "Frame times are medians (min–max in brackets); ratio: barytex ÷ llvmpipe medians (above "
+        "1: barytex slower). Mean absolute difference over every "
         "pixel's RGB, 8-bit sRGB, as a check that both draw the same picture.",
         "",
     ] + table + [
         "",
+    ] + ([
         "Scaling, frame at 1 thread ÷ frame at N: " + "; ".join(scaling(rows, threads)) + ".",
         "",
+    ] if len(threads) > 1 else []) + [
         "Outside the frames (medians, ms): " + "; ".join(
             f"{r['scene']} ({r['threads']} thr) barytex load {r['bx_stages'].get('load', 0):.1f}, decode "
             f"{r['bx_stages'].get('decode', 0):.1f}, mips {r['bx_stages'].get('mips', 0):.1f}, encode + write "
@@ -529,10 +539,12 @@ def write_markdown(path, rows, threads, table, command, version, renderer, size,
         "vertex processing and setup run on the calling thread besides them. The barytex frame "
         "excludes the encode to 8 bits (reported apart); the llvmpipe frame includes the write "
         "to its target and the readback. Mips differ: barytex filters premultiplied alpha in linear "
-        "light with exact rounding; glGenerateMipmap on this driver averages "
+        "light, correctly rounded; glGenerateMipmap on this driver averages "
         + ("in linear light" if mips["linear_light"] else "the stored sRGB bytes (not linear light)")
-        + f" (level 1 of black|white: {mips['level1']}) with straight alpha. llvmpipe's level of detail "
-        "is per 2×2 quad and its filter weights are fixed-point; barytex's are per pixel and exact. "
+        + f" (level 1 of black|white: {mips['level1']}) with straight alpha (the scenes here are opaque). "
+        "llvmpipe's level of detail comes from finite differences over 2×2 quads, barytex's from exact "
+        "per-pixel derivatives. `--stats` makes barytex draw once more with a constant shader to time "
+        "rasterization; that pass is outside its frame. "
         + ("Each side drew identical images at every thread count." if stable else
            "**Some images differ between thread counts on one side.**"),
     ]
