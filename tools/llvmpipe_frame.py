@@ -2,8 +2,11 @@
 """Frame time of barytex's unlit renderer beside Mesa's llvmpipe (OpenGL 4.5 on the CPU), on the
 same glTF scenes with the same camera, 1 and 2 threads on each side, and the ratio.
 
-    python3 tools/llvmpipe_frame.py [--fixtures DIR] [--barytex BIN] [--frames N]
+    python3 tools/llvmpipe_frame.py [--fixtures DIR] [--barytex BIN] [--frames N] [--rounds R]
                                     [--scenes Avocado Suzanne ...] [--markdown FILE]
+
+e.g. `python3 tools/llvmpipe_frame.py --frames 5 --rounds 3 --markdown /tmp/peers-llvmpipe.md`
+(about a minute on 2 shared cores); `--help` lists every option.
 
 The script makes its own virtual environment (moderngl, numpy, Pillow at the versions of
 tools/conformance/requirements.txt) under ~/.cache/barytex/llvmpipe-venv on first use and re-runs
@@ -19,9 +22,11 @@ with the view and projection barytex prints (`--print-camera`, automatic camera)
   one process per run; the frame is the draw (`raster` + `shade` of the `stages:` line: the
   framebuffer, rasterization and shading into barytex's float target). Load, PNG decode, mips and
   encode + write are reported apart. Median over N runs.
-- llvmpipe: one subprocess per thread count with LP_NUM_THREADS=T set before the context exists;
+- llvmpipe: one subprocess per thread count and round with LP_NUM_THREADS=T set before the context exists;
   scene upload and mip generation are timed apart (each followed by glFinish); the frame is
   clear + draws + glFinish + glReadPixels into memory, median of N frames after warm-up frames.
+- Each round measures both sides back to back for each thread count; the ratio is the median of
+  the rounds' ratios, with their range, so load that comes and goes shows as a spread.
 
 The glTF reader is tools/conformance/gl_render.py's (the conformance run's), bounded here before
 use: files and buffers up to --max-mib, images up to 8192², URIs only under the model's folder,
@@ -173,12 +178,15 @@ def run_barytex(binary, scene, size, threads, runs, out_png):
         if run.returncode != 0:
             raise RuntimeError((run.stderr.strip() or run.stdout.strip() or "failed").splitlines()[-1])
         text = run.stdout
+        stages = parse_stages(text)
         if i > 0:  # the first run warms the file cache and the binary
-            samples.append(parse_stages(text))
+            samples.append(stages)
+    view, projection = parse_matrices(text)
+    if not samples:
+        return {"view": view.tolist(), "projection": projection.tolist()}
     stages = {k: statistics.median(s[k] for s in samples) for k in samples[0]}
     frames = [s["raster"] + s["shade"] for s in samples]
-    view, projection = parse_matrices(text)
-    return {"stages": stages, "frame_ms": statistics.median(frames), "frames_ms": frames,
+    return {"stages": stages, "stage_samples": samples, "frame_ms": statistics.median(frames), "frames_ms": frames,
             "view": view.tolist(), "projection": projection.tolist(), "stats": text}
 
 
@@ -193,6 +201,7 @@ def worker(job_path):
     from PIL import Image
 
     sys.path.insert(0, str(CONFORMANCE))
+    sys.dont_write_bytecode = True  # no __pycache__ left in the source tree
     import gl_render
     from gl_render import GL_SRGB8_ALPHA8, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T
     from gl_render import LINEAR, LINEAR_MIPMAP_LINEAR, Gltf, Renderer, instances
@@ -373,6 +382,9 @@ def main():
     ap.add_argument("--size", default="1024x1024", help="WIDTHxHEIGHT (default %(default)s)")
     ap.add_argument("--threads", default="1,2", help="thread counts on each side (default %(default)s)")
     ap.add_argument("--frames", type=int, default=11, help="timed frames / barytex runs (default %(default)s)")
+    ap.add_argument("--rounds", type=int, default=1,
+                    help="repeat both sides this many times; the ratio is the median of the rounds' "
+                         "ratios, with their range (default %(default)s)")
     ap.add_argument("--warmup", type=int, default=3, help="llvmpipe frames before timing (default %(default)s)")
     ap.add_argument("--gl-target", choices=["srgb8", "rgba32f"], default="srgb8",
                     help="llvmpipe's colour target: GL_SRGB8_ALPHA8 with GL_FRAMEBUFFER_SRGB, or "
@@ -389,9 +401,9 @@ def main():
     try:
         size = tuple(int(v) for v in args.size.lower().split("x"))
         threads = [int(t) for t in args.threads.split(",")]
-        assert len(size) == 2 and min(size) > 0 and min(threads) > 0 and args.frames > 0
+        assert len(size) == 2 and min(size) > 0 and min(threads) > 0 and args.frames > 0 and args.rounds > 0
     except (ValueError, AssertionError):
-        sys.exit("--size is WIDTHxHEIGHT, --threads a comma-separated list of counts ≥ 1, --frames ≥ 1")
+        sys.exit("--size is WIDTHxHEIGHT, --threads a comma-separated list of counts ≥ 1, --frames and --rounds ≥ 1")
     binary = Path(args.barytex)
     if not binary.is_file():
         sys.exit(f"no barytex binary at {binary} (cargo build --release -p barytex, or --barytex)")
@@ -400,61 +412,77 @@ def main():
     command = "python3 tools/llvmpipe_frame.py " + " ".join(shlex.quote(a) for a in sys.argv[1:])
     version = subprocess.run([str(binary), "--version"], capture_output=True, text=True).stdout.strip()
 
+    # Scenes: bounded, and drawn by barytex once (its camera, and a warm file cache).
     scenes, skipped = [], []
     for name in args.scenes:
         path = find_scene(name, fixtures)
         why = "not found" if path is None else check_scene(path, args.max_mib << 20)
         if why is None:
-            bx = {}
             try:
-                for t in threads:
-                    png = out / f"{safe(name)}-barytex-t{t}.png"
-                    print(f"barytex {name}, {t} thread(s), {args.frames} runs …", file=sys.stderr)
-                    bx[t] = run_barytex(binary, path, size, t, args.frames, png)
-                    bx[t]["png"] = str(png)
+                first = run_barytex(binary, path, size, threads[0], 0, out / f"{safe(name)}-barytex-t{threads[0]}.png")
             except (RuntimeError, ValueError) as e:
                 why = f"barytex: {e}"
         if why is not None:
             print(f"skipping {name}: {why}", file=sys.stderr)
             skipped.append((name, why))
             continue
-        scenes.append({"name": name, "path": str(path), "barytex": bx})
+        scenes.append({"name": name, "path": str(path), "view": first["view"], "projection": first["projection"]})
     if not scenes:
         sys.exit("no scene to measure")
 
-    gl = {}
+    # Rounds: both sides back to back for each thread count, so that each round's ratio is
+    # measured under about the same load.
+    bx = {(s["name"], t): [] for s in scenes for t in threads}  # per round: run_barytex's result
+    gl = {t: [] for t in threads}  # per round: the worker's result
     jobs = tempfile.TemporaryDirectory()
-    for t in threads:
-        print(f"llvmpipe, LP_NUM_THREADS={t}, {args.frames} frames …", file=sys.stderr)
-        job = {"size": size, "frames": args.frames, "warmup": args.warmup, "target": args.gl_target,
-               "scenes": [{"name": s["name"], "path": s["path"], "view": s["barytex"][threads[0]]["view"],
-                           "projection": s["barytex"][threads[0]]["projection"],
-                           "png": str(out / f"{safe(s['name'])}-llvmpipe-t{t}.png")} for s in scenes]}
-        gl[t] = run_llvmpipe(t, job, jobs.name)
+    for r in range(args.rounds):
+        for t in threads:
+            for s in scenes:
+                print(f"round {r + 1}/{args.rounds}: barytex {s['name']}, --threads {t}, {args.frames} runs …",
+                      file=sys.stderr)
+                png = out / f"{safe(s['name'])}-barytex-t{t}.png"
+                bx[s["name"], t].append(run_barytex(binary, s["path"], size, t, args.frames, png))
+            print(f"round {r + 1}/{args.rounds}: llvmpipe, LP_NUM_THREADS={t}, {args.frames} frames …",
+                  file=sys.stderr)
+            job = {"size": size, "frames": args.frames, "warmup": args.warmup, "target": args.gl_target,
+                   "scenes": [{"name": s["name"], "path": s["path"], "view": s["view"],
+                               "projection": s["projection"],
+                               "png": str(out / f"{safe(s['name'])}-llvmpipe-t{t}.png")} for s in scenes]}
+            gl[t].append(run_llvmpipe(t, job, jobs.name))
     jobs.cleanup()
 
     rows = []
     for s in scenes:
         name = s["name"]
-        mad, over8 = compare(s["barytex"][threads[0]]["png"], out / f"{safe(name)}-llvmpipe-t{threads[0]}.png",
-                             out / f"{safe(name)}-diff.png")
-        stable_bx = all(same_image(s["barytex"][threads[0]]["png"], s["barytex"][t]["png"]) for t in threads)
-        stable_gl = all(same_image(out / f"{safe(name)}-llvmpipe-t{threads[0]}.png",
-                                   out / f"{safe(name)}-llvmpipe-t{t}.png") for t in threads)
+        bx_png = lambda t: out / f"{safe(name)}-barytex-t{t}.png"
+        gl_png = lambda t: out / f"{safe(name)}-llvmpipe-t{t}.png"
+        mad, over8 = compare(bx_png(threads[0]), gl_png(threads[0]), out / f"{safe(name)}-diff.png")
+        stable = all(same_image(bx_png(threads[0]), bx_png(t)) and same_image(gl_png(threads[0]), gl_png(t))
+                     for t in threads)
         for t in threads:
-            b, g = s["barytex"][t], gl[t]["scenes"][name]
-            rows.append({"scene": name, "threads": t, "bx": b["frame_ms"], "gl": g["frame_ms"],
-                         "bx_range": (min(b["frames_ms"]), max(b["frames_ms"])),
-                         "gl_range": (min(g["frames_ms"]), max(g["frames_ms"])),
-                         "ratio": b["frame_ms"] / g["frame_ms"], "mad": mad, "over8": over8,
-                         "bx_stages": b["stages"], "gl_upload": g["upload_ms"], "gl_mips": g["mips_ms"],
-                         "gl_decode": g["decode_ms"], "stable": stable_bx and stable_gl})
+            b, g = bx[name, t], [round_[ "scenes"][name] for round_ in gl[t]]
+            b_frames = [f for one in b for f in one["frames_ms"]]
+            g_frames = [f for one in g for f in one["frames_ms"]]
+            ratios = [one_b["frame_ms"] / one_g["frame_ms"] for one_b, one_g in zip(b, g)]
+            stage_samples = [st for one in b for st in one["stage_samples"]]
+            rows.append({
+                "scene": name, "threads": t,
+                "bx": statistics.median(b_frames), "bx_range": (min(b_frames), max(b_frames)),
+                "gl": statistics.median(g_frames), "gl_range": (min(g_frames), max(g_frames)),
+                "ratio": statistics.median(ratios), "ratio_range": (min(ratios), max(ratios)),
+                "mad": mad, "over8": over8, "stable": stable,
+                "bx_stages": {k: statistics.median(st[k] for st in stage_samples) for k in stage_samples[0]},
+                "gl_upload": statistics.median(one["upload_ms"] for one in g),
+                "gl_mips": statistics.median(one["mips_ms"] for one in g),
+                "gl_decode": statistics.median(one["decode_ms"] for one in g),
+            })
 
-    renderer = gl[threads[0]]["renderer"]
-    mips = gl[threads[0]]["srgb_mips"]
+    renderer = gl[threads[0]][0]["renderer"]
+    mips = gl[threads[0]][0]["srgb_mips"]
     table = render_table(rows)
     print()
-    print(f"barytex: {version}; OpenGL: {renderer}; {size[0]}×{size[1]}, {args.frames} frames; "
+    print(f"barytex: {version}; OpenGL: {renderer}; {size[0]}×{size[1]}, {args.frames} frames × "
+          f"{args.rounds} round(s); "
           f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} CPUs")
     print("\n".join(table))
     print()
@@ -490,8 +518,10 @@ def render_table(rows):
              "|---|---:|---:|---:|---:|---:|---:|"]
     span = lambda lo_hi: f"({lo_hi[0]:.0f}–{lo_hi[1]:.0f})"
     for r in rows:
+        lo, hi = r["ratio_range"]
+        ratio = f"{r['ratio']:.2f}×" + (f" ({lo:.2f}–{hi:.2f})" if hi > lo else "")
         lines.append(f"| {r['scene']} | {r['threads']} | {r['bx']:.1f} {span(r['bx_range'])} | {r['gl']:.1f} "
-                     f"{span(r['gl_range'])} | {r['ratio']:.2f}× | {r['mad']:.3f} | {100 * r['over8']:.2f} % |")
+                     f"{span(r['gl_range'])} | {ratio} | {r['mad']:.3f} | {100 * r['over8']:.2f} % |")
     return lines
 
 
@@ -515,11 +545,12 @@ def write_markdown(path, rows, threads, table, command, version, renderer, size,
         "",
         "Same scene, automatic camera (barytex's printed view and projection on both sides), unlit, "
         "trilinear, no anti-aliasing, depth test, background #76767c. barytex frame: `raster` + "
-        f"`shade` of `--stats` (median of {args.frames} processes, `--threads N`); llvmpipe frame: clear + "
+        f"`shade` of `--stats` ({args.frames} processes per round, `--threads N`); llvmpipe frame: clear + "
         f"draws + glFinish + glReadPixels into a {'GL_SRGB8_ALPHA8' if args.gl_target == 'srgb8' else 'RGBA32F'} "
-        f"target (median of {args.frames} frames after {args.warmup} warm-up, `LP_NUM_THREADS=N`). "
-        "Frame times are medians (min–max in brackets); ratio: barytex ÷ llvmpipe medians (above "
-        "1: barytex slower). Mean absolute difference over every "
+        f"target ({args.frames} frames per round after {args.warmup} warm-up, `LP_NUM_THREADS=N`); "
+        f"{args.rounds} round(s), each measuring both sides back to back. Frame times are medians over "
+        "all rounds (min–max in brackets); ratio: barytex ÷ llvmpipe, the median of the rounds' "
+        "ratios of medians (their range in brackets; above 1: barytex slower). Mean absolute difference over every "
         "pixel's RGB, 8-bit sRGB, as a check that both draw the same picture.",
         "",
     ] + table + [
