@@ -11,7 +11,8 @@ e.g. `python3 tools/llvmpipe_frame.py --frames 5 --rounds 3 --markdown /tmp/peer
 The script makes its own virtual environment (moderngl, numpy, Pillow at the versions of
 tools/conformance/requirements.txt) under ~/.cache/barytex/llvmpipe-venv on first use and re-runs
 itself there. It needs a release build of barytex (`cargo build --release -p barytex`; default
-target/release/barytex) and Mesa's EGL/llvmpipe (Debian: libegl1 libgl1-mesa-dri).
+target/release/barytex) and Mesa's EGL/llvmpipe (Debian: libegl1 libegl-mesa0 libopengl0
+libgl1-mesa-dri).
 
 Both sides draw glTF's unlit model (base colour factor × base colour texture × COLOR_0) at
 1024×1024 by default, no anti-aliasing, depth test, the same background, textures filtered
@@ -22,7 +23,7 @@ with the view and projection barytex prints (`--print-camera`, automatic camera)
   one process per run; the frame is the draw (`raster` + `shade` of the `stages:` line: the
   framebuffer, rasterization and shading into barytex's float target). Load, PNG decode, mips and
   encode + write are reported apart. Median over N runs.
-- llvmpipe: one subprocess per thread count and round with LP_NUM_THREADS=T set before the context exists;
+- llvmpipe: one subprocess per thread count and round, LP_NUM_THREADS=T set before the context exists;
   scene upload and mip generation are timed apart (each followed by glFinish); the frame is
   clear + draws + glFinish + glReadPixels into memory, median of N frames after warm-up frames.
 - Each round measures both sides back to back for each thread count; the ratio is the median of
