@@ -409,6 +409,8 @@ def main():
     if not binary.is_file():
         sys.exit(f"no barytex binary at {binary} (cargo build --release -p barytex, or --barytex)")
     fixtures, out = Path(args.fixtures), Path(args.out)
+    if not (fixtures / "gltf").is_dir() and not all(Path(n).is_file() for n in args.scenes):
+        sys.exit(f"no gltf/ folder under {fixtures} (--fixtures DIR or BARYTEX_FIXTURES)")
     out.mkdir(parents=True, exist_ok=True)
     command = "python3 tools/llvmpipe_frame.py " + " ".join(shlex.quote(a) for a in sys.argv[1:])
     version = subprocess.run([str(binary), "--version"], capture_output=True, text=True).stdout.strip()
