@@ -572,7 +572,9 @@ def write_markdown(path, rows, threads, table, command, version, renderer, size,
         "ratios are indicative, not exact. llvmpipe's LP_NUM_THREADS counts rasterizer threads; "
         "vertex processing and setup run on the calling thread besides them. The barytex frame "
         "excludes the encode to 8 bits (reported apart); the llvmpipe frame includes the write "
-        "to its target and the readback. Mips differ: barytex filters premultiplied alpha in linear "
+        "to its target and the readback. Each barytex frame is the only one of its process (fresh "
+        "framebuffer pages every run: the CLI draws one frame); llvmpipe's are warm frames reusing "
+        "its framebuffer and compiled shaders. Mips differ: barytex filters premultiplied alpha in linear "
         "light, correctly rounded; glGenerateMipmap on this driver averages "
         + ("in linear light" if mips["linear_light"] else "the stored sRGB bytes (not linear light)")
         + f" (level 1 of black|white: {mips['level1']}) with straight alpha (the scenes here are opaque). "
