@@ -304,9 +304,7 @@ impl Framebuffer {
     /// A failed allocation.
     #[cfg(feature = "texture")]
     pub fn to_rgba32f(&self) -> Result<Texture2d<Rgba32f>, TextureError> {
-        Texture2d::from_fn_with_limits(self.width, self.height, &Limits::UNLIMITED, |x, y| {
-            Rgba32f::from_linear(unpremultiply(self.resolved(x, y)))
-        })
+        self.encoded(Rgba32f::from_linear)
     }
 
     /// The colour buffer encoded as 8-bit sRGB (correctly rounded, resolved). Needs the
@@ -327,9 +325,35 @@ impl Framebuffer {
     /// A failed allocation.
     #[cfg(feature = "texture")]
     pub fn to_srgba8(&self) -> Result<Texture2d<Srgba8>, TextureError> {
-        Texture2d::from_fn_with_limits(self.width, self.height, &Limits::UNLIMITED, |x, y| {
-            Srgba8::from_linear(unpremultiply(self.resolved(x, y)))
-        })
+        self.encoded(Srgba8::from_linear)
+    }
+
+    /// Every pixel resolved, un-premultiplied and encoded by `encode`, rows in parallel on the
+    /// current rayon pool (the correctly rounded sRGB encode is most of the cost); the result
+    /// does not depend on the thread count.
+    #[cfg(feature = "texture")]
+    fn encoded<T: Texel>(
+        &self,
+        encode: impl Fn(Vec4) -> T + Sync,
+    ) -> Result<Texture2d<T>, TextureError> {
+        use rayon::prelude::*;
+        let (w, h) = (self.width as usize, self.height as usize);
+        let mut texels = Vec::new();
+        texels
+            .try_reserve_exact(w * h)
+            .map_err(|_| TextureError::OutOfMemory {
+                bytes: (w * h * core::mem::size_of::<T>()) as u64,
+            })?;
+        texels.resize(w * h, T::default());
+        texels
+            .par_chunks_mut(w.max(1))
+            .enumerate()
+            .for_each(|(y, row)| {
+                for (x, texel) in row.iter_mut().enumerate() {
+                    *texel = encode(unpremultiply(self.resolved(x as u32, y as u32)));
+                }
+            });
+        Texture2d::from_texels_with_limits(self.width, self.height, texels, &Limits::UNLIMITED)
     }
 }
 

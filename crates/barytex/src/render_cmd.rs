@@ -507,7 +507,8 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     })?;
     progress.stage("writing");
     let started = Instant::now();
-    let image = rendered.image.to_srgba8()?;
+    // Encoded on the same pool as the render (rows in parallel).
+    let image = pool.install(|| rendered.image.to_srgba8())?;
     save(&image, &options.out)?;
     let save_seconds = started.elapsed().as_secs_f64();
     progress.finish();
