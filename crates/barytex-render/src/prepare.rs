@@ -353,6 +353,7 @@ fn prepare_textures(
         };
         slots.push((base, emissive, occlusion, metallic_roughness, normal));
     }
+    textures.prepare_all()?;
     let mut tangents_generated = 0;
     let primitives = scene
         .instances

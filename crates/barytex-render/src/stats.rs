@@ -44,7 +44,8 @@ pub struct RenderStats {
     pub varyings_skipped: usize,
     /// Seconds preparing geometry, textures and mip chains.
     pub prepare_seconds: f64,
-    /// Of `prepare_seconds`, those preparing mipmapped textures (level 0's copy and its chain).
+    /// Of `prepare_seconds`, those preparing the textures (copies and mip chains, several
+    /// textures in parallel): wall time.
     pub mip_seconds: f64,
     /// Seconds rasterizing and shading (the two are interleaved per pixel).
     pub draw_seconds: f64,

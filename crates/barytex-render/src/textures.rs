@@ -3,6 +3,7 @@
 //! somewhere on screen.
 
 use std::collections::HashMap;
+use std::sync::Arc;
 
 use barytex_gltf::SamplerParams;
 use barytex_gltf::material::TextureRef;
@@ -154,12 +155,54 @@ pub(crate) struct Textures {
     /// (image, sRGB?, the glTF sampler, how alpha is read) → index into `list`; the render's [`Filter`] is the
     /// same for every texture, so the glTF sampler decides the descriptor.
     index: HashMap<(usize, bool, SamplerParams, AlphaUse), usize>,
+    /// The textures [`Textures::slot`] asked for, prepared together by [`Textures::prepare_all`]
+    /// (in `list`'s order).
+    pending: Vec<Pending>,
     /// Mip chains built.
     pub(crate) mip_chains: usize,
     /// Textures whose filter uses mipmaps but that are never minified: no chain built.
     pub(crate) mips_skipped: usize,
-    /// Seconds preparing the mipmapped textures (level 0's copy and the chain).
+    /// Seconds preparing the textures (copies and mip chains, in parallel), wall time.
     pub(crate) mip_seconds: f64,
+}
+
+/// A texture to prepare: the decoded image and how it will be sampled.
+#[derive(Debug)]
+struct Pending {
+    decoded: Arc<AnyTexture2d>,
+    alpha: AlphaUse,
+    descriptor: SamplerDescriptor,
+    mipmapped: bool,
+}
+
+impl Pending {
+    fn prepare(&self) -> Result<PreparedTexture, TextureError> {
+        let (alpha, descriptor, mipmapped) = (self.alpha, self.descriptor, self.mipmapped);
+        Ok(match self.decoded.as_ref() {
+            AnyTexture2d::Srgba8(t) => {
+                PreparedTexture::Srgba8(prepared_for(t, alpha, descriptor, mipmapped)?)
+            }
+            AnyTexture2d::Rgba8(t) => {
+                PreparedTexture::Rgba8(prepared_for(t, alpha, descriptor, mipmapped)?)
+            }
+            AnyTexture2d::R8(t) => {
+                PreparedTexture::R8(prepared_for(t, alpha, descriptor, mipmapped)?)
+            }
+            AnyTexture2d::Rgba16f(t) => {
+                PreparedTexture::Rgba16f(prepared_for(t, alpha, descriptor, mipmapped)?)
+            }
+            AnyTexture2d::Rgba32f(t) => {
+                PreparedTexture::Rgba32f(prepared_for(t, alpha, descriptor, mipmapped)?)
+            }
+            // `slot` queues only the formats above.
+            _ => {
+                return Err(TextureError::InvalidParameter {
+                    what: "texture format",
+                    reason: "not one the renderer samples",
+                });
+            }
+        })
+    }
 }
 
 /// The largest texels-per-pixel ratio (square root of the area ratio) of any on-screen triangle
@@ -208,35 +251,35 @@ impl Textures {
             } else if wants_mips {
                 self.mips_skipped += 1;
             }
-            let preparing = std::time::Instant::now();
-            let prepared = match decoded.as_ref() {
-                AnyTexture2d::Srgba8(t) => {
-                    PreparedTexture::Srgba8(prepared_for(t, alpha, descriptor, mipmapped)?)
-                }
-                AnyTexture2d::Rgba8(t) => {
-                    PreparedTexture::Rgba8(prepared_for(t, alpha, descriptor, mipmapped)?)
-                }
-                AnyTexture2d::R8(t) => {
-                    PreparedTexture::R8(prepared_for(t, alpha, descriptor, mipmapped)?)
-                }
-                AnyTexture2d::Rgba16f(t) => {
-                    PreparedTexture::Rgba16f(prepared_for(t, alpha, descriptor, mipmapped)?)
-                }
-                AnyTexture2d::Rgba32f(t) => {
-                    PreparedTexture::Rgba32f(prepared_for(t, alpha, descriptor, mipmapped)?)
-                }
-                _ => return Ok(None),
-            };
-            if mipmapped {
-                self.mip_seconds += preparing.elapsed().as_secs_f64();
-            }
-            self.list.push(prepared);
-            self.index.insert(key, self.list.len() - 1);
-            self.list.len() - 1
+            self.pending.push(Pending {
+                decoded: Arc::clone(decoded),
+                alpha,
+                descriptor,
+                mipmapped,
+            });
+            self.index.insert(key, self.pending.len() - 1);
+            self.pending.len() - 1
         };
         Ok(Some(Slot {
             texture,
             mapping: r.mapping,
         }))
+    }
+
+    /// Prepares every texture the slots asked for (copies, mip chains), in parallel on the
+    /// current rayon pool: the chains of a material's textures are independent, and each is
+    /// one sequential pass. `list[i]` is the texture of slot index `i` whatever the thread count.
+    pub(crate) fn prepare_all(&mut self) -> Result<(), TextureError> {
+        use rayon::prelude::*;
+        let started = std::time::Instant::now();
+        let prepared: Vec<PreparedTexture> = self
+            .pending
+            .par_iter()
+            .map(Pending::prepare)
+            .collect::<Result<_, _>>()?;
+        self.list.extend(prepared);
+        self.pending.clear();
+        self.mip_seconds += started.elapsed().as_secs_f64();
+        Ok(())
     }
 }
