@@ -9,6 +9,9 @@
 //! as euc's own example does, so the rasterizers are compared, not the samplers) times a Lambert
 //! term for the torus. barytex runs single-threaded (a 1-thread rayon pool) and with 2 threads.
 //!
+//! The `raster_only_*` groups isolate rasterization: a constant shader with one (unused)
+//! interpolated float and the same 16-byte RGBA f32 colour format on both sides, depth-tested.
+//!
 //! Run with `cargo bench -p barytex-benches --bench raster`.
 
 mod common;
@@ -16,7 +19,9 @@ mod common;
 use std::hint::black_box;
 use std::time::Duration;
 
-use common::{ClipMesh, NearestTexture, render_barytex, render_euc};
+use common::{
+    ClipMesh, NearestTexture, raster_only_barytex, raster_only_euc, render_barytex, render_euc,
+};
 use criterion::{Criterion, criterion_group, criterion_main};
 use glam::{Mat4, Vec2, Vec3, Vec4};
 
@@ -99,6 +104,16 @@ fn bench(c: &mut Criterion) {
         });
         group.bench_function("euc", |b| {
             b.iter(|| black_box(render_euc(&scene, &texture, lit, SIZE)));
+        });
+        group.finish();
+        // Rasterization alone: a constant shader and the same 16-byte colour format on both
+        // sides, so the shared shader's divisions and lookups do not hide the rasterizers.
+        let mut group = c.benchmark_group(format!("raster_only_1024_{name}"));
+        group.bench_function("barytex_1_thread", |b| {
+            b.iter(|| one.install(|| black_box(raster_only_barytex(&scene, SIZE))));
+        });
+        group.bench_function("euc", |b| {
+            b.iter(|| black_box(raster_only_euc(&scene, SIZE)));
         });
         group.finish();
     }

@@ -168,3 +168,73 @@ pub(crate) fn render_euc(
     );
     color
 }
+
+/// The constant colour of the rasterization-only comparison.
+const FLAT: [f32; 4] = [0.8, 0.5, 0.2, 1.0];
+
+/// barytex's side of the rasterization-only comparison: one interpolated float (unused), a
+/// constant colour.
+struct ConstantShader<'a> {
+    mesh: &'a ClipMesh,
+}
+
+impl Shader for ConstantShader<'_> {
+    type Vertex = u32;
+    type Varying = f32;
+    fn vertex(&self, &i: &u32) -> (Vec4, f32) {
+        (self.mesh.clip[i as usize], 0.0)
+    }
+    fn fragment(&self, _: &Fragment<'_, f32>) -> Option<Vec4> {
+        Some(Vec4::from_array(FLAT))
+    }
+}
+
+/// euc's side: the same vertices, one interpolated float, the same constant colour written as
+/// four f32 (the 16-byte pixel barytex's `Framebuffer` stores).
+struct ConstantPipeline<'a> {
+    mesh: &'a ClipMesh,
+}
+
+impl Pipeline for ConstantPipeline<'_> {
+    type Vertex = u32;
+    type VsOut = f32;
+    type Pixel = [f32; 4];
+    fn vert(&self, &i: &u32) -> ([f32; 4], f32) {
+        (self.mesh.clip[i as usize].to_array(), 0.0)
+    }
+    fn frag(&self, _: &f32) -> [f32; 4] {
+        FLAT
+    }
+}
+
+/// Rasterization alone on barytex: `mesh` with a constant shader into a new `size²` target,
+/// depth-tested, no culling.
+pub(crate) fn raster_only_barytex(mesh: &ClipMesh, size: u32) -> Framebuffer {
+    let mut fb = Framebuffer::new(size, size, Vec4::ZERO, &TargetLimits::default()).expect("size²");
+    let state = PipelineState {
+        cull: CullMode::None,
+        ..PipelineState::default()
+    };
+    let vertices: Vec<u32> = (0..mesh.clip.len() as u32).collect();
+    draw(
+        &mut fb,
+        &ConstantShader { mesh },
+        &state,
+        &vertices,
+        &mesh.indices,
+    );
+    fb
+}
+
+/// Rasterization alone on euc: the same, into a 16-byte-per-pixel colour buffer and a depth
+/// buffer.
+pub(crate) fn raster_only_euc(mesh: &ClipMesh, size: u32) -> Buffer2d<[f32; 4]> {
+    let mut color = Buffer2d::new([size as usize, size as usize], [0.0_f32; 4]);
+    let mut depth = Buffer2d::new([size as usize, size as usize], 1.0_f32);
+    ConstantPipeline { mesh }.draw::<Triangles<'_, Buffer2d<f32>, BackfaceCullingDisabled>, _>(
+        &mesh.indices,
+        &mut color,
+        Some(&mut depth),
+    );
+    color
+}
