@@ -22,6 +22,7 @@ use crate::light::{PunctualLight, SceneLight};
 use crate::material::Material;
 use crate::mesh::{Mesh, MeshContext, MeshDef};
 use crate::node::{NodeDef, NodeRefs, check_forest};
+use crate::portal_def::PortalKind;
 use crate::sampler::SamplerParams;
 use crate::scene::{MeshInstance, Scene, SceneImage, SceneStats, Texture};
 use crate::skin::SkinDef;
@@ -194,6 +195,19 @@ fn check_asset(root: Obj<'_>) -> Result<(), SceneError> {
 }
 
 impl Document {
+    /// Node `n`'s world matrix in its own hierarchy (the forest is checked acyclic and within
+    /// the depth limit before this runs).
+    fn node_world(&self, n: usize) -> Mat4 {
+        let mut world = Mat4::IDENTITY;
+        let mut at = Some(n);
+        while let Some(i) = at {
+            let Some(node) = self.nodes.get(i) else { break };
+            world = node.local * world;
+            at = self.parents.get(i).copied().flatten();
+        }
+        world
+    }
+
     #[allow(clippy::too_many_lines)]
     fn parse(
         root: Obj<'_>,
@@ -527,6 +541,7 @@ impl Document {
         let mut placed_meshes: Vec<(usize, usize, Mat4)> = Vec::new();
         let mut cameras = Vec::new();
         let mut lights = Vec::new();
+        let mut portals = Vec::new();
         let mut stack: Vec<(usize, Mat4)> =
             roots.iter().rev().map(|&n| (n, Mat4::IDENTITY)).collect();
         while let Some((n, parent_world)) = stack.pop() {
@@ -602,6 +617,21 @@ impl Document {
                     position: world.transform_point3(Vec3::ZERO),
                     direction,
                 });
+            }
+            if let Some(def) = &node.portal {
+                if portals.len() >= limits.max_portals {
+                    return Err(SceneError::TooLarge {
+                        pointer: format!("/nodes/{n}"),
+                        what: "portals",
+                        requested: portals.len() as u64 + 1,
+                        limit: limits.max_portals as u64,
+                    });
+                }
+                let target_world = match def.kind {
+                    PortalKind::Target(t) => Some(self.node_world(t)),
+                    PortalKind::Mirror => None,
+                };
+                portals.push(def.place(n, node.name.clone(), world, target_world)?);
             }
             for &c in node.children.iter().rev() {
                 stack.push((c, world));
@@ -814,6 +844,7 @@ impl Document {
             stats,
             decode_seconds,
             environment: None,
+            portals,
         })
     }
 }

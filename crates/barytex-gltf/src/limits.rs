@@ -66,11 +66,15 @@ pub struct SceneLimits {
     /// cost. Refused, not culled: which lights matter depends on the view, which the loader
     /// does not know.
     pub max_lights: usize,
+    /// Most portals and mirrors (nodes with `extras.barytex_portal`, see
+    /// [`Portal`](crate::Portal)) in the flattened scene: a renderer may draw the whole scene
+    /// again through each one it sees.
+    pub max_portals: usize,
 }
 
 impl Default for SceneLimits {
     /// Generous for real assets (a 2 GiB GLB, 50 M triangles, 2 GiB of decoded images, 1024
-    /// lights), small enough that a forged file cannot exhaust a workstation. Instanced
+    /// lights, 64 portals), small enough that a forged file cannot exhaust a workstation. Instanced
     /// vertices are three per instanced triangle, so a non-indexed scene at the triangle limit
     /// fits; the vertex limit bites on meshes with many more vertices than triangles.
     fn default() -> Self {
@@ -90,6 +94,7 @@ impl Default for SceneLimits {
             max_nodes: 1_000_000,
             max_instances: 1_000_000,
             max_lights: 1024,
+            max_portals: 64,
         }
     }
 }

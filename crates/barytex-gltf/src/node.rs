@@ -5,6 +5,7 @@
 use glam::{Mat4, Quat, Vec3};
 
 use crate::json::Obj;
+use crate::portal_def::PortalDef;
 use crate::{SceneError, SceneLimits};
 
 /// A node as declared.
@@ -18,6 +19,8 @@ pub(crate) struct NodeDef {
     pub(crate) skin: Option<usize>,
     pub(crate) has_matrix: bool,
     pub(crate) local: Mat4,
+    /// `extras.barytex_portal`, when declared.
+    pub(crate) portal: Option<PortalDef>,
 }
 
 /// Counts of the arrays a node may refer to.
@@ -127,7 +130,9 @@ impl NodeDef {
         if !local.is_finite() {
             return Err(SceneError::invalid(obj.ptr, "non-finite transform"));
         }
+        let portal = PortalDef::parse(&obj, refs.nodes)?;
         Ok(Self {
+            portal,
             name: obj.opt_str("name")?.map(str::to_owned),
             children,
             mesh,
@@ -223,6 +228,7 @@ mod tests {
             skin: None,
             has_matrix: false,
             local: Mat4::IDENTITY,
+            portal: None,
         }
     }
 

@@ -10,6 +10,7 @@ use crate::camera::{DocumentCamera, SceneCamera};
 use crate::light::SceneLight;
 use crate::material::Material;
 use crate::mesh::Mesh;
+use crate::portal::Portal;
 use crate::sampler::SamplerParams;
 
 /// One placement of a mesh in the world. Instances of the same mesh share its decoded data.
@@ -142,6 +143,9 @@ pub struct Scene {
     /// in computer generated images", *Communications of the ACM* 19(10), 1976). glTF has no such
     /// slot: files load with `None`; code (the demo) sets it.
     pub environment: Option<Arc<AnyTexture2d>>,
+    /// Portals and mirrors placed by the scene's nodes (`extras.barytex_portal`, see
+    /// [`Portal`]), in depth-first node order; code may add its own.
+    pub portals: Vec<Portal>,
 }
 
 impl Scene {

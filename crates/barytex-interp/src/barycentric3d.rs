@@ -57,9 +57,15 @@ impl Barycentric3d {
 /// [`InterpError::NonFinite`] for NaN or infinite coordinates.
 ///
 /// # Accuracy
-/// Each weight is within `1 ulp + 2⁻⁴⁶·κ` of the exact rational weight of the projected point,
-/// `κ = max(|p|, |a|, |b|, |c|) · max edge length / |2·area|` (tests
-/// `barycentric_3d_within_bar` and `slivers_3d_within_bar`).
+/// For all finite input (any distance of `p` from the triangle, any scale), each weight is
+/// within `1 ulp + 2⁻⁴⁶·κ` of the exact rational weight of the projected point,
+/// `κ = max(|p|, |a|, |b|, |c|) · max edge length / |2·area|`; a weight whose exact value is
+/// beyond f32's range is the infinity of its sign. Derivation: the weight of `a` is computed as
+/// `((b − p) × (c − b))·n / |n|²` in f64 from the exact f32 inputs; its numerator's rounding
+/// error is at most `8·2⁻⁵³·|b − p|·|c − b|·|n|`, so the weight's is at most
+/// `16·2⁻⁵³·κ = 2⁻⁴⁹·κ` before the final rounding to f32, and `n`'s own `2⁻³⁰` relative error
+/// moves the weight by less than an ulp (tests `barycentric_3d_within_bar`,
+/// `slivers_3d_within_bar` and `far_points_within_bar`).
 ///
 /// ```
 /// use barytex_interp::barycentric_3d;
@@ -92,9 +98,14 @@ pub fn barycentric_3d(p: Vec3, tri: [Vec3; 3]) -> Result<Barycentric3d, InterpEr
     if nn == 0.0 {
         return Err(InterpError::DegenerateTriangle);
     }
-    let area = |q: DVec3, r: DVec3| (q - p).cross(r - p).dot(n) / nn;
+    // The weight of a is the signed area of (p, b, c) over that of (a, b, c):
+    // `((b − p) × (c − p))·n / |n|²`. Written as `((b − p) × (c − b))·n / |n|²` (equal, since
+    // `(b − p) × (b − p) = 0`), the rounding of each product is relative to `|b − p|·|c − b|`, one
+    // long vector times one edge, instead of `|b − p|·|c − p|`: far from a small triangle the
+    // latter is quadratic in the distance and rounds the weight away.
+    let weight = |q: DVec3, r: DVec3| ((q - p).cross(r - q).dot(n) / nn) as f32;
     Ok(Barycentric3d {
-        weights: [area(b, c) as f32, area(c, a) as f32, area(a, b) as f32],
+        weights: [weight(b, c), weight(c, a), weight(a, b)],
     })
 }
 

@@ -10,8 +10,15 @@ use crate::Interpolate;
 /// corners are reproduced exactly and constant values stay constant.
 ///
 /// # Accuracy
-/// Three [`lerp`](crate::lerp)s: within `6·ε·max|corner|` per component for `(α, β)` in
-/// `[0, 1]²` (test `bilinear_accuracy_bound`).
+/// Three [`lerp`](crate::lerp)s in two levels: for `(α, β)` in `[0, 1]²` and finite corners of
+/// any shape, each component is within `6·ε·max|corner| + 2·2⁻¹⁴⁹` of the exact value, with
+/// `max|corner|` over that component's four corner values. The absolute term is [`lerp`]'s
+/// underflow term, once per level (the second level's lerp is a convex combination, so the
+/// first level's errors pass through it undamped but not amplified) (tests
+/// `bilinear_accuracy_bound` and, with subnormal, huge and non-convex corners,
+/// `bilinear_accuracy_bound_any_corners`).
+///
+/// [`lerp`]: crate::lerp
 ///
 /// ```
 /// use barytex_interp::bilinear;

@@ -17,7 +17,9 @@ use crate::lerp::{lerp, lerp_f64};
 /// 1. **Exact endpoints**: `a.lerp(b, 0.0) == a` and `a.lerp(b, 1.0) == b`.
 /// 2. **Consistency**: `a.lerp(a, t) == a` for every finite `t`.
 /// 3. **Partition of unity**: for weights `wᵢ` that sum to 1,
-///    `Σ wᵢ·a` equals `a` within `(n + 1)·ε·Σ|wᵢ|·|a|` per component.
+///    `Σ wᵢ·a` equals `a` within `(n + 1)·ε·Σ|wᵢ|·|a| + n·2⁻¹⁴⁹` per f32 component
+///    (`n·2⁻¹⁰⁷⁴` for f64 components): each of the `n` products may underflow, rounding to the
+///    subnormal spacing by half of it at most (test `partition_of_unity_with_subnormals`).
 /// 4. **Weights that sum to 0 are allowed**: `Σ wᵢ·vᵢ` is a plain linear combination, never
 ///    normalised, so screen-space derivatives (`∂w/∂x` sums to 0) use the same code; for equal
 ///    values it is 0 within the same bound.

@@ -47,8 +47,13 @@ exact_lerp!(
     /// `a + (b − a)t`, which is not exact at `t = 1` (glam #823 is the history).
     ///
     /// # Accuracy
-    /// For finite inputs and `t` in `[0, 1]`: `|lerp(a, b, t) − exact| ≤ 2·ε·max(|a|, |b|)` with
-    /// `ε = f32::EPSILON` (test `lerp_accuracy_bound` in `tests/lerp.rs`).
+    /// For finite inputs and `t` in `[0, 1]`:
+    /// `|lerp(a, b, t) − exact| ≤ 2·ε·max(|a|, |b|) + 2⁻¹⁴⁹` with `ε = f32::EPSILON`. The
+    /// absolute term is underflow: each of the (at most two) products rounds to the fixed spacing
+    /// `2⁻¹⁴⁹` of the subnormals, by at most half of it, and sums of subnormals are exact — so
+    /// `lerp(1e-45, 3e-45, 0.5)` is 7e-46 off, far above the relative term alone (tests
+    /// `lerp_accuracy_bound`, `lerp_accuracy_bound_with_subnormals` and
+    /// `underflow_needs_the_absolute_term` in `tests/lerp.rs`).
     ///
     /// # Special values
     /// A NaN input gives NaN, except that `t == 1` returns `b` as given. An infinite endpoint
@@ -69,8 +74,10 @@ exact_lerp!(
     /// [`lerp`] for `f64`, with the same four properties.
     ///
     /// # Accuracy
-    /// For finite inputs and `t` in `[0, 1]`: `|lerp_f64(a, b, t) − exact| ≤ 2·ε·max(|a|, |b|)`
-    /// with `ε = f64::EPSILON` (test `lerp_f64_accuracy_bound` in `tests/lerp.rs`).
+    /// For finite inputs and `t` in `[0, 1]`:
+    /// `|lerp_f64(a, b, t) − exact| ≤ 2·ε·max(|a|, |b|) + 2⁻¹⁰⁷⁴` with `ε = f64::EPSILON`, the
+    /// absolute term for underflow as in [`lerp`] (tests `lerp_f64_accuracy_bound` and
+    /// `lerp_f64_accuracy_bound_with_subnormals` in `tests/lerp.rs`).
     lerp_f64,
     f64
 );
@@ -86,8 +93,12 @@ exact_lerp!(
 /// input is NaN or infinite (`what` is `"a"`, `"b"` or `"x"`).
 ///
 /// # Accuracy
-/// Computed in f64 and rounded once: within 1 ulp of the exact quotient of the f32 inputs when
-/// `a` and `b` are within 2²⁹ of each other in magnitude (test `inverse_lerp_is_within_one_ulp`).
+/// Within 1 ulp of the exact quotient `(x − a)/(b − a)` of the f32 inputs, for every finite
+/// input (any magnitudes, subnormals included; a quotient beyond f32's range is the infinity of
+/// its sign). Computed in f64: the two differences and the quotient each err by at most 2⁻⁵³
+/// relative (no f64 overflow or underflow is possible from f32 inputs), `3·2⁻⁵³` in all, far
+/// below the final rounding to f32 (tests `inverse_lerp_is_within_one_ulp` and
+/// `inverse_lerp_is_within_one_ulp_at_any_magnitude`).
 ///
 /// ```
 /// use barytex_interp::inverse_lerp;
@@ -119,10 +130,14 @@ pub fn inverse_lerp(a: f32, b: f32, x: f32) -> Result<f32, crate::InterpError> {
 /// [`InterpError::NonFinite`](crate::InterpError::NonFinite) for NaN or infinite input.
 ///
 /// # Accuracy
-/// Evaluated in f64 from the f32 inputs and rounded once: within 1 ulp of the exact value for
-/// coordinates of similar magnitude, as tested on `[−300, 300]²` (test
-/// `segment_parameter_matches_exact`); with wildly different magnitudes the f64 dot product can
-/// cancel.
+/// Evaluated in f64 from the f32 inputs and rounded once: for every finite input,
+/// `|α̃ − α| ≤ 1 ulp + 2⁻⁴⁷·|u − x1|/|x2 − x1|` of the exact parameter `α`. The second term is the
+/// f64 rounding of the differences, the dot product and the quotient (at most `11·2⁻⁵³` times
+/// the condition number `|u − x1|/|x2 − x1|`). It is at most half an ulp of `α`, and the result
+/// within 1 ulp of the nearest f32 to `α`, whenever `|u − x1| ≤ 2²²·|α|·|x2 − x1|` — unless `u`
+/// lies far off the line compared with its projection's distance from `x1` (tests
+/// `segment_parameter_matches_exact` on `[−300, 300]²` and
+/// `segment_parameter_within_its_condition_bound` with magnitudes 2⁻⁴⁰ … 2⁴⁰).
 ///
 /// ```
 /// use barytex_interp::segment_parameter_2d;

@@ -21,8 +21,11 @@ use crate::{InterpError, Interpolate};
 /// vanishing line).
 ///
 /// # Accuracy
-/// Evaluated in f64 and rounded once: within 1 ulp (plus `2⁻⁵⁰·Σ|αⱼ/wⱼ| / |Σαⱼ/wⱼ|` for
-/// extrapolated weights) of the exact formula (tests `perspective_weights_within_ulps` and
+/// Evaluated in f64 and rounded once. Convex weights (all `αᵢ ≥ 0`): each result within 1 ulp
+/// of the exact formula. Extrapolated (affine) weights: the normalising sum `Σαⱼ/wⱼ` may cancel,
+/// and each result `λ̃ᵢ` satisfies the absolute bound
+/// `|λ̃ᵢ − λᵢ| ≤ 1 ulp(λᵢ) + 2⁻⁵⁰·κ·(1 + |λᵢ|)` with `κ = Σ|αⱼ/wⱼ| / |Σαⱼ/wⱼ|` (tests
+/// `perspective_weights_within_ulps`, `perspective_weights_extrapolated` and
 /// `equal_w_is_exactly_affine`).
 ///
 /// ```

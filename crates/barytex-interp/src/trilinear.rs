@@ -11,8 +11,25 @@ use crate::Interpolate;
 /// four lerps along α, two along β and one along γ, so corners are reproduced exactly.
 ///
 /// # Accuracy
-/// Seven [`lerp`](crate::lerp)s: within `8·ε·max|corner|` for `t` in `[0, 1]³` (test
-/// `trilinear_reproduces_trilinear_functions`, which also checks exactness on dyadic inputs).
+/// Seven [`lerp`](crate::lerp)s in three levels: for `t` in `[0, 1]³` and finite corners,
+/// within `8·ε·max|corner| + 3·2⁻¹⁴⁹` of the exact value (per component), the absolute term
+/// being [`lerp`]'s underflow term once per level (tests `trilinear_accuracy_bound` and
+/// `trilinear_accuracy_bound_with_subnormals`).
+///
+/// **Exact on dyadic inputs, under this condition:** if every corner is an integer multiple of
+/// `2^e`, `t`'s components are multiples of `2^−p`, `2^−q`, `2^−r` in `[0, 1]`, and
+/// `max|corner| ≤ 2^(24 + e − p − q − r)`, the result is the exact trilinear value. Proof: each
+/// [`lerp`] of values that are multiples of `U` and at most `M` in magnitude, at a `t` that is a
+/// multiple of `2^−k`, computes only multiples of `U·2^−k` of magnitude at most `M` (`b − a`
+/// for same-sign `a`, `b`; `t·(b − a)`, `t·b`, `(1 − t)·a`, and the sum, which lies between `a`
+/// and `b`), and an integer multiple `N·U·2^−k` with `|N| ≤ 2²⁴` is an f32 (subnormals
+/// included), so every step is exact. The three levels multiply `U` by `2^−p`, `2^−q`, `2^−r`;
+/// the condition is `M ≤ 2²⁴·U·2^−(p+q+r)`. Corners up to 2¹² at `t = k/16` qualify; the audit's
+/// corners (up to 76) at `t = (177/256, 69/128, 27/64)` do not, and the result is rounded (test
+/// `dyadic_exactness_needs_its_condition`; the condition itself:
+/// `trilinear_is_exact_under_the_dyadic_condition`, `trilinear_reproduces_trilinear_functions`).
+///
+/// [`lerp`]: crate::lerp
 ///
 /// ```
 /// use barytex_interp::trilinear;

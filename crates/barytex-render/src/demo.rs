@@ -433,6 +433,7 @@ pub fn demo_scene() -> Scene {
         // The demo's images are generated, not decoded.
         decode_seconds: 0.0,
         environment: sky(),
+        portals: Vec::new(),
         stats: barytex_gltf::scene::SceneStats {
             meshes_loaded: 5,
             primitives_loaded: 5,
@@ -442,4 +443,112 @@ pub fn demo_scene() -> Scene {
             ..barytex_gltf::scene::SceneStats::default()
         },
     }
+}
+
+/// The mirror of [`demo_scene_with_mirror`]: half its width, its height and its frame's width
+/// (where it stands: [`mirror_placement`]).
+const MIRROR_HALF_WIDTH: f32 = 3.4;
+const MIRROR_HEIGHT: f32 = 2.9;
+const MIRROR_FRAME: f32 = 0.14;
+
+fn mirror_placement() -> Mat4 {
+    // Leaning forward a little, as a shop mirror tilted down: it shows the floor around the
+    // objects and their tops rather than the floor at the horizon, which only fogs and blurs
+    // to grey.
+    let turn = Quat::from_rotation_y(-0.22) * Quat::from_rotation_x(0.28);
+    Mat4::from_rotation_translation(turn, Vec3::new(0.3, 0.0, -3.7))
+}
+
+/// A picture frame of four flat bars around the mirror, in the mirror's local space (the glass
+/// at z = 0 facing +z, from y = 0 up); the bars stand a hair in front of the glass.
+fn mirror_frame() -> Primitive {
+    let (w, h, f, z) = (MIRROR_HALF_WIDTH, MIRROR_HEIGHT, MIRROR_FRAME, 0.01);
+    let bars = [
+        (-w - f, 0.0, -w, h + f),
+        (w, 0.0, w + f, h + f),
+        (-w, h, w, h + f),
+        (-w, 0.0, w, f * 0.5),
+    ];
+    let mut positions = Vec::new();
+    let mut triangles = Vec::new();
+    for (x0, y0, x1, y1) in bars {
+        let base = positions.len() as u32;
+        positions.extend([
+            Vec3::new(x0, y0, z),
+            Vec3::new(x1, y0, z),
+            Vec3::new(x1, y1, z),
+            Vec3::new(x0, y1, z),
+        ]);
+        triangles.extend([[base, base + 1, base + 2], [base, base + 2, base + 3]]);
+    }
+    Primitive {
+        normals: Some(vec![Vec3::Z; positions.len()]),
+        positions,
+        tangents: None,
+        tex_coords0: None,
+        tex_coords1: None,
+        colors0: None,
+        triangles,
+        indices: Vec::new(),
+        material: Some(5),
+        topology: Topology::Triangles,
+    }
+}
+
+/// The demo scene with a framed mirror standing behind the objects
+/// ([`Portal`](barytex_gltf::Portal), drawn through an oblique near plane with the winding
+/// swapped): it shows the objects' far sides, the floor towards the camera and the mirror
+/// sphere from behind. `barytex demo --mirror` renders it.
+///
+/// ```
+/// use barytex_render::demo::{demo_options, demo_scene, demo_scene_with_mirror};
+/// use barytex_render::render;
+///
+/// let scene = demo_scene_with_mirror();
+/// assert_eq!(scene.portals.len(), 1);
+/// assert_eq!(scene.instances.len(), demo_scene().instances.len() + 1); // the frame
+/// let out = render(&scene, &demo_options(32, 18))?;
+/// assert_eq!(out.stats.portal_views, 1);
+/// # Ok::<(), barytex_render::RenderError>(())
+/// ```
+#[must_use]
+pub fn demo_scene_with_mirror() -> Scene {
+    let mut scene = demo_scene();
+    let placement = mirror_placement();
+    let (w, h) = (MIRROR_HALF_WIDTH, MIRROR_HEIGHT);
+    let glass = [
+        Vec3::new(-w, 0.0, 0.0),
+        Vec3::new(w, 0.0, 0.0),
+        Vec3::new(w, h, 0.0),
+        Vec3::new(-w, h, 0.0),
+    ]
+    .map(|p| placement.transform_point3(p))
+    .to_vec();
+    // A rectangle by construction: `mirror` cannot refuse it.
+    if let Ok(mirror) = barytex_gltf::Portal::mirror(glass) {
+        scene
+            .portals
+            .push(mirror.with_tint(glam::Vec4::new(0.55, 0.7, 0.8, 0.06)));
+    }
+    scene.materials.push(Material {
+        name: Some("mirror frame".to_owned()),
+        base_color_factor: glam::Vec4::new(0.09, 0.06, 0.04, 1.0),
+        metallic_factor: 0.0,
+        roughness_factor: 0.45,
+        double_sided: true,
+        ..Material::default()
+    });
+    scene
+        .instances
+        .push(instance(5, "mirror frame", mirror_frame(), placement));
+    let triangles: usize = scene
+        .instances
+        .iter()
+        .map(MeshInstance::triangle_count)
+        .sum();
+    scene.stats.meshes_loaded += 1;
+    scene.stats.primitives_loaded += 1;
+    scene.stats.triangles = triangles;
+    scene.stats.instanced_triangles = triangles;
+    scene
 }

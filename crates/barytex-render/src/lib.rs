@@ -44,11 +44,13 @@ mod lights;
 mod material_shader;
 mod options;
 mod passes;
+mod portals;
 mod prepare;
 mod raster_only;
 mod stats;
 mod surface;
 mod textures;
+mod view_draw;
 
 use std::fmt;
 
@@ -60,6 +62,7 @@ pub use framing::{CameraSource, RenderCamera, auto_camera, scene_bounds, scene_c
 pub use options::{AntiAliasing, CameraChoice, Filter, RenderOptions, ResolvedFilter, Shading};
 pub use prepare::choose_camera;
 pub use stats::RenderStats;
+pub use view_draw::MAX_PORTAL_VIEWS_PER_PASS;
 
 use passes::Varyings;
 

@@ -197,11 +197,16 @@ pub struct RenderOptions {
     /// ([`RenderStats::raster_seconds`](super::RenderStats::raster_seconds)). Costs about one
     /// more draw; the image is unchanged.
     pub measure_stages: bool,
+    /// How many portals deep a view may look (the scene's
+    /// [`Portal`](barytex_gltf::Portal)s: a view through a mirror that sees another mirror is
+    /// 2 deep); a portal seen at this depth shows the background under its tint. 0 draws every
+    /// portal closed.
+    pub portal_depth: u32,
 }
 
 impl Default for RenderOptions {
     /// 800 × 600, the first camera, Blinn–Phong, the files' filters, no anti-aliasing, a
-    /// mid-grey background, no fog.
+    /// mid-grey background, no fog, portals 4 deep.
     fn default() -> Self {
         Self {
             width: 800,
@@ -213,6 +218,7 @@ impl Default for RenderOptions {
             background: Vec4::new(0.18, 0.18, 0.2, 1.0),
             fog: None,
             measure_stages: false,
+            portal_depth: 4,
         }
     }
 }

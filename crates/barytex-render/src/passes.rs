@@ -5,16 +5,16 @@
 use std::time::Instant;
 
 use barytex_raster::{
-    AdaptiveOptions, AdaptiveStats, Blend, CullMode, DrawStats, Framebuffer, FrontFace,
-    PipelineState, RasterError, SamplePattern, TargetLimits, Viewport, draw, draw_lines,
-    draw_points, render_adaptive, render_supersampled,
+    AdaptiveOptions, AdaptiveStats, DrawStats, Framebuffer, RasterError, SamplePattern,
+    TargetLimits, render_adaptive, render_supersampled,
 };
 use glam::{Vec2, Vec3};
 
 use crate::material_shader::{Frequency, MaterialShader};
-use crate::prepare::{ItemKind, Prepared};
-use crate::raster_only::RasterOnly;
+use crate::portals::View;
+use crate::prepare::Prepared;
 use crate::surface::Reads;
+use crate::view_draw::{PortalViews, SceneDraw};
 use crate::{AntiAliasing, RenderError, RenderOptions, Shading, planned_passes};
 
 /// Which parts of the varying the material shaders interpolate.
@@ -38,6 +38,8 @@ pub(crate) struct Drawn {
     pub(crate) varyings: (usize, usize),
     pub(crate) draw_seconds: f64,
     pub(crate) raster_seconds: Option<f64>,
+    /// What the portals did.
+    pub(crate) portal_views: PortalViews,
 }
 
 /// The shading frequency of the items' main index lists.
@@ -102,66 +104,18 @@ pub(crate) fn draw_passes(
             }
         }
     }
-    // Every item, in order, into `fb` shifted by `shift`; with a constant fragment stage when
-    // `raster_only`.
-    let draw_items = |fb: &mut Framebuffer, shift: Vec2, raster_only: bool| {
-        let mut stats = DrawStats::default();
-        for &i in &prepared.order {
-            let item = &items[i];
-            let passes: [(Frequency, &[u32]); 2] = [
-                (frequency, &item.indices),
-                (Frequency::Phong, &item.phong_indices),
-            ];
-            for (frequency, indices) in passes {
-                if indices.is_empty() {
-                    continue;
-                }
-                let shader = shader_for(i, frequency);
-                let state = PipelineState {
-                    cull: if item.double_sided {
-                        CullMode::None
-                    } else {
-                        CullMode::Back
-                    },
-                    front_face: if item.flips_winding {
-                        FrontFace::Cw
-                    } else {
-                        FrontFace::Ccw
-                    },
-                    viewport: Some(Viewport {
-                        x: shift.x,
-                        y: shift.y,
-                        ..Viewport::full(width, height)
-                    }),
-                    blend: if item.blended {
-                        Blend::Over
-                    } else {
-                        Blend::Replace
-                    },
-                    depth_write: !item.blended,
-                    sample_shading,
-                    ..PipelineState::default()
-                };
-                let v = &item.vertices;
-                let s = match (item.kind, raster_only) {
-                    (ItemKind::Triangles, true) => {
-                        draw(fb, &RasterOnly(&shader), &state, v, indices)
-                    }
-                    (ItemKind::Triangles, false) => draw(fb, &shader, &state, v, indices),
-                    (ItemKind::Points, true) => {
-                        draw_points(fb, &RasterOnly(&shader), &state, v, indices)
-                    }
-                    (ItemKind::Points, false) => draw_points(fb, &shader, &state, v, indices),
-                    (ItemKind::Lines(t), true) => {
-                        draw_lines(fb, &RasterOnly(&shader), &state, v, indices, t)
-                    }
-                    (ItemKind::Lines(t), false) => draw_lines(fb, &shader, &state, v, indices, t),
-                };
-                stats += &s;
-            }
-        }
-        stats
+    let scene = SceneDraw {
+        prepared,
+        options,
+        frequency,
+        sample_shading,
+        interpolate_all: varyings == Varyings::All,
     };
+    let camera_view = View::camera(camera);
+    // Errors inside a pass (a target for a portal's view that cannot be allocated) are kept
+    // for after the passes, which run inside the raster crate's callbacks.
+    let mut pass_error: Option<RasterError> = None;
+    let mut portal_views = PortalViews::default();
     let mut total = DrawStats::default();
     let mut passes = 0_u32;
     // Seconds of the constant-shader passes, and of those passes with their copies (taken out
@@ -169,16 +123,25 @@ pub(crate) fn draw_passes(
     let (mut raster_seconds, mut measuring_seconds) = (0.0, 0.0);
     let mut draw_scene = |fb: &mut Framebuffer, shift: Vec2| {
         passes += 1;
+        portal_views.new_pass();
         if options.measure_stages {
             // The same pass from the same state (depth, mask), into a copy that is dropped.
             let copying = Instant::now();
             let mut scratch = fb.clone();
             let started = Instant::now();
-            draw_items(&mut scratch, shift, true);
+            let mut ignored = PortalViews::default();
+            if let Err(e) = scene.draw_view(&mut scratch, shift, true, &camera_view, &mut ignored) {
+                pass_error.get_or_insert(e);
+            }
             raster_seconds += started.elapsed().as_secs_f64();
             measuring_seconds += copying.elapsed().as_secs_f64();
         }
-        total += &draw_items(fb, shift, false);
+        match scene.draw_view(fb, shift, false, &camera_view, &mut portal_views) {
+            Ok(stats) => total += &stats,
+            Err(e) => {
+                pass_error.get_or_insert(e);
+            }
+        }
         on_pass(passes, planned_passes(options.anti_aliasing));
     };
     let limits = TargetLimits::default();
@@ -248,7 +211,11 @@ pub(crate) fn draw_passes(
         }
     };
     let draw_seconds = drawing.elapsed().as_secs_f64() - measuring_seconds;
+    if let Some(e) = pass_error {
+        return Err(e.into());
+    }
     Ok(Drawn {
+        portal_views,
         image,
         draw: total,
         passes,

@@ -16,6 +16,7 @@ use glam::{Mat3, Vec2, Vec3, Vec4};
 
 use crate::lights::{highlight_context, light_terms, shininess, world_lights};
 use crate::material_shader::{ShaderMaterial, WorldPrimitive};
+use crate::portals::{PreparedPortal, prepare_portals};
 use crate::textures::{AlphaUse, PreparedTexture, Textures};
 use crate::{
     CameraChoice, RenderCamera, RenderError, RenderOptions, Shading, auto_camera, scene_camera,
@@ -78,6 +79,9 @@ pub(crate) struct Prepared<'a> {
     pub(crate) tangents_generated: usize,
     pub(crate) hybrid_phong_triangles: usize,
     pub(crate) hybrid_gouraud_triangles: usize,
+    /// The scene's portals that can be drawn, and how many could not (see `Portal::check`).
+    pub(crate) portals: Vec<PreparedPortal>,
+    pub(crate) portals_skipped: usize,
     pub(crate) seconds: f64,
 }
 
@@ -113,7 +117,10 @@ pub(crate) fn prepare<'a>(
     } else {
         (0, 0)
     };
+    let (portals, portals_skipped) = prepare_portals(&scene.portals);
     Ok(Prepared {
+        portals,
+        portals_skipped,
         camera,
         items,
         order,
@@ -277,7 +284,13 @@ fn prepare_textures(
         .collect();
     // Texels per pixel, at most: the uv stretch per pixel times the largest stretch of
     // uv → texels (the texture's size after its KHR_texture_transform).
+    // Through a portal a surface can be farther than the camera sees it: with portals to
+    // draw, every texture whose filter reads mip levels gets its chain.
+    let has_portals = scene.portals.iter().any(|p| p.check().is_ok());
     let minification = |r: &TextureRef, (w, h): (u32, u32)| -> f32 {
+        if has_portals {
+            return f32::INFINITY;
+        }
         let m = r.mapping.transform;
         let (w, h) = (w as f32, h as f32);
         let texels = largest_stretch([

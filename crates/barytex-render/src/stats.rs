@@ -13,7 +13,8 @@ pub struct RenderStats {
     /// Triangles submitted per pass (point and line primitives are counted in `draw`'s
     /// `points_in` and `lines_in`).
     pub triangles: usize,
-    /// Fragment and triangle counts, summed over passes.
+    /// Fragment and triangle counts of the scene's items as the camera sees them, summed over
+    /// passes (what portals draw is in [`portal_draw`](Self::portal_draw)).
     pub draw: DrawStats,
     /// Passes over the scene (more than one for accumulated and adaptive supersampling).
     pub passes: u32,
@@ -53,6 +54,20 @@ pub struct RenderStats {
     /// the shading's cost.
     /// Alpha-masked fragments are not discarded in that pass, so it may do slightly more work.
     pub raster_seconds: Option<f64>,
+    /// Views drawn through portals and mirrors, summed over passes.
+    pub portal_views: u64,
+    /// Fragment and triangle counts of what the portals drew — the scene in the views through
+    /// them, and their surfaces — summed over passes.
+    pub portal_draw: DrawStats,
+    /// Portals seen but drawn closed (the background under the tint), summed over passes: at
+    /// the [`portal_depth`](crate::RenderOptions::portal_depth) limit, past the
+    /// [`MAX_PORTAL_VIEWS_PER_PASS`](crate::MAX_PORTAL_VIEWS_PER_PASS) budget, or seen so
+    /// nearly edge-on that no oblique frustum exists.
+    pub portals_closed: u64,
+    /// The scene's portals that are not drawn because they fail
+    /// [`Portal::check`](barytex_gltf::Portal::check) (degenerate, non-planar, non-convex,
+    /// non-finite, singular).
+    pub portals_skipped: usize,
 }
 
 impl RenderStats {
@@ -82,6 +97,10 @@ impl RenderStats {
             mip_seconds: prepared.textures.mip_seconds,
             draw_seconds: drawn.draw_seconds,
             raster_seconds: drawn.raster_seconds,
+            portal_views: drawn.portal_views.drawn,
+            portal_draw: drawn.portal_views.draw,
+            portals_closed: drawn.portal_views.closed,
+            portals_skipped: prepared.portals_skipped,
         }
     }
 }

@@ -24,6 +24,7 @@ pub mod exact;
 pub mod invariants;
 pub mod invariants_3d;
 pub mod polygon_invariants;
+pub mod precise;
 pub mod reference;
 pub mod sampling_invariants;
 pub mod seeded;

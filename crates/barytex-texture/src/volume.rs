@@ -244,8 +244,15 @@ impl<T: Texel> Texture3d<T> {
     ///
     /// # Accuracy
     /// Trilinear weights are the exact-coordinate weights rounded once to f32 (as in 2D); the
-    /// blend is seven lerps `a + (b − a)·t`, exact at texel centres and on constants, and exact
-    /// on trilinear functions at dyadic points (`tests/volume.rs`).
+    /// blend is seven lerps `a + (b − a)·t`, exact at texel centres and on constants. On
+    /// trilinear functions at dyadic points it is within `8·ε·max|texel|` of the function, and
+    /// exact when every blend step is: texels that are multiples of `2^e` with
+    /// `max|texel| ≤ 2^(23 + e − p − q − r)` (the difference `b − a` of opposite-sign texels may
+    /// double it) at points whose three weights are multiples of `2^−p`, `2^−q`, `2^−r` (the
+    /// condition of `barytex_interp::trilinear`, whose proof applies step by step). Not exact
+    /// beyond it: one bit less of headroom than the lerp form. Tests
+    /// `tests/volume.rs::{trilinear_reproduces_trilinear_functions,
+    /// trilinear_is_exact_under_the_dyadic_condition}`.
     ///
     /// ```
     /// use barytex_texture::{Limits, R32f, SamplerDescriptor, Texture3d};

@@ -124,3 +124,52 @@ fn mean_error_falls_with_the_clamp() {
     }
     assert!(mean[4] <= 0.5 * mean[0], "{mean:?}");
 }
+
+/// Issue 20, item 6: the documented "anisotropic probes and EWA vs trilinear" comparison on
+/// random grazing footprints instead of the one 16:1 footprint of
+/// `sampling.rs::anisotropic_filters_resolve_the_minor_axis`: 400 seeded footprints of
+/// anisotropy 4 … 24 at every orientation over the alternating rows, against the footprint's
+/// true average (`footprint_average`). The probes cut trilinear's mean error by more than half
+/// (measured 0.023 against 0.074); EWA by less (measured 0.050: its one-footprint advantage of
+/// the sampling test does not carry over in full), asserted below 0.8 of trilinear's.
+#[test]
+fn anisotropic_and_ewa_beat_trilinear_on_random_grazing_footprints() {
+    let mut state = 0x2545_f491_4f6c_dd1d_u64;
+    let mut next = || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 40) as f32 / (1u64 << 24) as f32
+    };
+    let chain = MipChain::generate(rows(), &MipOptions::default()).expect("small");
+    let repeat = |d: SamplerDescriptor| {
+        TextureSampler::new(chain.clone(), d.with_address_mode(AddressMode::Repeat))
+    };
+    let filters = [
+        repeat(SamplerDescriptor::trilinear()),
+        repeat(SamplerDescriptor::anisotropic(16)),
+        repeat(SamplerDescriptor {
+            anisotropic_filter: barytex_texture::sampler::AnisotropicFilter::Ewa,
+            ..SamplerDescriptor::anisotropic(16)
+        }),
+    ];
+    let mut mean = [0.0_f32; 3];
+    let n = 400;
+    for _ in 0..n {
+        let uv = Vec2::new(next(), next());
+        let along = Vec2::from_angle(next() * std::f32::consts::PI);
+        let minor = 0.25 + 0.75 * next();
+        let major = minor * (4.0 + 20.0 * next());
+        let (ddx, ddy) = (
+            along * major / SIZE as f32,
+            along.perp() * minor / SIZE as f32,
+        );
+        let truth = footprint_average(uv, ddx, ddy);
+        for (m, s) in mean.iter_mut().zip(&filters) {
+            *m += (s.sample(uv, ddx, ddy).x - truth).abs() / n as f32;
+        }
+    }
+    println!("mean error trilinear, ×16 probes, EWA: {mean:?}");
+    assert!(mean[1] < 0.5 * mean[0], "{mean:?}");
+    assert!(mean[2] < 0.8 * mean[0], "{mean:?}");
+}

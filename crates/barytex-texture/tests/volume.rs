@@ -51,6 +51,50 @@ proptest! {
     }
 }
 
+proptest! {
+    /// The exactness condition of `Texture3d::sample`'s docs: integer texels with
+    /// `max|texel| ≤ 2^(23 − p − q − r)`, sampled where the weights are multiples of 2⁻³ on
+    /// every axis (p = q = r = 3: texels up to 2¹⁴), give the exact trilinear value, bit for bit.
+    #[test]
+    fn trilinear_is_exact_under_the_dyadic_condition(
+        seed in any::<u64>(), p in (0_u32..56, 0_u32..24, 0_u32..120),
+    ) {
+        let (w, h, d) = (8_u32, 4_u32, 16_u32);
+        let limit = 1_i64 << (23 - 9);
+        let value = |x: u32, y: u32, z: u32| {
+            let mut s = seed ^ (u64::from(x) << 40 | u64::from(y) << 20 | u64::from(z)) | 1;
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            ((s % (2 * limit as u64 + 1)) as i64 - limit) as f32
+        };
+        let volume = Texture3d::from_fn([w, h, d], &Limits::default(), |x, y, z| R32f(value(x, y, z)))
+            .expect("small");
+        let (cx, cy, cz) = (f64::from(p.0) / 8.0, f64::from(p.1) / 8.0, f64::from(p.2) / 8.0);
+        let uvw = Vec3::new(
+            ((cx + 0.5) / f64::from(w)) as f32,
+            ((cy + 0.5) / f64::from(h)) as f32,
+            ((cz + 0.5) / f64::from(d)) as f32,
+        );
+        let got = volume.sample(uvw, &SamplerDescriptor::bilinear()).x;
+        // The exact trilinear value at the centre coordinate (cx, cy, cz), in f64 (exact: at
+        // most 2¹⁴ times eighths cubed).
+        let (x0, y0, z0) = (cx.floor() as u32, cy.floor() as u32, cz.floor() as u32);
+        let (fx, fy, fz) = (cx.fract(), cy.fract(), cz.fract());
+        let mut want = 0.0f64;
+        for (i, j, k) in (0..8).map(|n| (n & 1, (n >> 1) & 1, (n >> 2) & 1)) {
+            let wx = if i == 1 { fx } else { 1.0 - fx };
+            let wy = if j == 1 { fy } else { 1.0 - fy };
+            let wz = if k == 1 { fz } else { 1.0 - fz };
+            let weight = wx * wy * wz;
+            if weight != 0.0 {
+                want += weight * f64::from(value(x0 + i, y0 + j, z0 + k));
+            }
+        }
+        prop_assert_eq!(f64::from(got), want, "at ({}, {}, {})", cx, cy, cz);
+    }
+}
+
 #[test]
 fn texel_centres_are_exact_and_results_stay_in_range() {
     let volume = Texture3d::from_fn([5, 3, 4], &Limits::default(), |x, y, z| {

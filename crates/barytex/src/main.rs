@@ -2,10 +2,10 @@
 //!
 //! - `barytex` (what `cargo run --release` runs): renders the built-in demo scene to
 //!   `barytex-demo.png` and prints where it went and how long each stage took (`barytex demo`
-//!   takes the render options).
+//!   takes the render options, and `--mirror` for the demo with a standing mirror).
 //! - `barytex render FILE [--scene N] [--camera N|auto] [--size WxH] [--shading unlit|phong]
 //!   [--filter …] [--aa …] [--background COLOUR] [--threads N] [-o OUT.png] [--print-camera]
-//!   [--stats] [--allow-dir DIR]…`: a glTF/GLB (its URIs read only files under its folder and
+//!   [--stats] [--portal-depth N] [--allow-dir DIR]…`: a glTF/GLB (its URIs read only files under its folder and
 //!   each DIR). `--camera N` is the document's `cameras[N]`; `--list-cameras` lists them and
 //!   where the scene places them, and renders nothing.
 //! - `barytex examples`: the worked examples of Buss, *3D Computer Graphics* (2003), ch. IV,
@@ -74,6 +74,11 @@ struct RenderArgs {
     /// adaptive:N (up to N samples where needed).
     #[arg(long, value_parser = render_cmd::parse_aa)]
     aa: Option<barytex_render::AntiAliasing>,
+    /// How many portals or mirrors deep a view may look (glTF nodes with
+    /// `extras.barytex_portal`, see docs/PORTALS.md), 0 to 16; 0 draws them closed.
+    #[arg(long, default_value_t = barytex_render::RenderOptions::default().portal_depth,
+          value_parser = render_cmd::parse_portal_depth)]
+    portal_depth: u32,
     /// Worker threads, at most 1024 (absent or 0: all cores); the image is the same for any
     /// count.
     #[arg(long, value_parser = render_cmd::parse_threads)]
@@ -112,6 +117,10 @@ struct DemoArgs {
     /// The PNG to write.
     #[arg(short, long, default_value = "barytex-demo.png")]
     out: PathBuf,
+    /// Stand a framed mirror behind the objects (a portal drawn through an oblique near plane;
+    /// see docs/PORTALS.md).
+    #[arg(long)]
+    mirror: bool,
     #[command(flatten)]
     render: RenderArgs,
 }
@@ -133,6 +142,7 @@ impl RenderArgs {
             threads: None,
             print_camera: false,
             stats: false,
+            portal_depth: demo.portal_depth,
         }
     }
 
@@ -148,6 +158,7 @@ impl RenderArgs {
             None => barytex_render::RenderOptions::default().background,
         };
         Ok(render_cmd::Options {
+            demo_mirror: false,
             file,
             scene,
             allowed_roots,
@@ -168,6 +179,7 @@ impl RenderArgs {
                     }),
                 background,
                 measure_stages: false,
+                portal_depth: self.portal_depth,
             },
             threads: self.threads,
             out,
@@ -278,6 +290,10 @@ fn main() -> ExitCode {
             };
             render
                 .options(None, None, Vec::new(), args.out)
+                .map(|options| render_cmd::Options {
+                    demo_mirror: args.mirror,
+                    ..options
+                })
                 .map_err(Into::into)
                 .and_then(|options| render_cmd::run(&options))
         }

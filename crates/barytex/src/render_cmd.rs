@@ -16,6 +16,8 @@ use glam::{Vec3, Vec4};
 pub(crate) struct Options {
     /// The glTF/GLB file; `None` renders the built-in demo scene.
     pub(crate) file: Option<PathBuf>,
+    /// The demo scene with its standing mirror (`barytex demo --mirror`).
+    pub(crate) demo_mirror: bool,
     /// Which of the file's scenes.
     pub(crate) scene: Option<usize>,
     /// Folders besides the file's own that its URIs may read (`--allow-dir`).
@@ -191,6 +193,19 @@ pub(crate) fn parse_shading(text: &str) -> Result<Shading, String> {
     }
 }
 
+/// The deepest portal nesting `--portal-depth` accepts: each level can multiply the views.
+pub(crate) const MAX_PORTAL_DEPTH: u32 = 16;
+
+/// A portal depth from 0 to [`MAX_PORTAL_DEPTH`].
+pub(crate) fn parse_portal_depth(text: &str) -> Result<u32, String> {
+    text.parse::<u32>()
+        .ok()
+        .filter(|&d| d <= MAX_PORTAL_DEPTH)
+        .ok_or_else(|| {
+            format!("portal depth `{text}`: expected a whole number from 0 to {MAX_PORTAL_DEPTH}")
+        })
+}
+
 /// A fog density ≥ 0 per unit of distance.
 pub(crate) fn parse_fog(text: &str) -> Result<f32, String> {
     text.parse::<f32>()
@@ -202,6 +217,7 @@ pub(crate) fn parse_fog(text: &str) -> Result<f32, String> {
 fn load(options: &Options) -> Result<(Scene, f64), Box<dyn std::error::Error>> {
     let started = Instant::now();
     let scene = match &options.file {
+        None if options.demo_mirror => barytex_render::demo::demo_scene_with_mirror(),
         None => barytex_render::demo::demo_scene(),
         Some(path) => load_path(
             path,
@@ -218,7 +234,7 @@ fn load(options: &Options) -> Result<(Scene, f64), Box<dyn std::error::Error>> {
     Ok((scene, started.elapsed().as_secs_f64()))
 }
 
-fn print_stats(rendered: &Rendered, scene: &Scene) {
+fn print_stats(rendered: &Rendered, scene: &Scene, portal_depth: u32) {
     let s = &rendered.stats;
     let d = &s.draw;
     println!(
@@ -259,6 +275,18 @@ fn print_stats(rendered: &Rendered, scene: &Scene) {
         println!(
             "hybrid shading: the highlight test sent {} triangles to Phong, {} to Gouraud",
             s.hybrid_phong_triangles, s.hybrid_gouraud_triangles
+        );
+    }
+    if !scene.portals.is_empty() {
+        println!(
+            "portals: {} in the scene, {} not drawable (degenerate); {} views drawn through them, \
+             {} seen closed (at --portal-depth {}); {} fragments shaded through them",
+            scene.portals.len(),
+            s.portals_skipped,
+            s.portal_views,
+            s.portals_closed,
+            portal_depth,
+            s.portal_draw.fragments_shaded
         );
     }
     if let Some(a) = &s.adaptive {
@@ -345,7 +373,13 @@ impl Drop for Progress {
 /// What is rendered, for messages: the file, or the demo scene.
 fn what(options: &Options) -> String {
     options.file.as_ref().map_or_else(
-        || "the built-in demo scene".to_owned(),
+        || {
+            if options.demo_mirror {
+                "the built-in demo scene with a mirror".to_owned()
+            } else {
+                "the built-in demo scene".to_owned()
+            }
+        },
         |p| p.display().to_string(),
     )
 }
@@ -490,7 +524,7 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         )
     );
     if options.stats {
-        print_stats(&rendered, &scene);
+        print_stats(&rendered, &scene, options.render.portal_depth);
     }
     let shown = std::fs::canonicalize(&options.out).unwrap_or_else(|_| options.out.clone());
     println!("wrote {}", shown.display());
@@ -513,6 +547,16 @@ fn save(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn portal_depths_parse_up_to_the_maximum() {
+        assert_eq!(parse_portal_depth("0"), Ok(0));
+        assert_eq!(parse_portal_depth("16"), Ok(16));
+        for bad in ["17", "-1", "two", "", "4294967296"] {
+            let error = parse_portal_depth(bad).expect_err(bad);
+            assert!(error.contains("from 0 to 16"), "{error}");
+        }
+    }
 
     #[test]
     fn threads_parse_up_to_the_maximum() {

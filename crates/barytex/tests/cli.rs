@@ -672,3 +672,52 @@ fn unlit_renders_need_no_normal_map() {
     assert!(String::from_utf8_lossy(&phong.stderr).contains("missing-normals.png"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `demo --mirror` draws the view through its mirror (and says so under `--stats`); at
+/// `--portal-depth 0` the mirror is closed; a depth beyond 16 is refused before rendering.
+#[test]
+fn demo_mirror_and_portal_depth() {
+    let dir = temp_dir("demo-mirror");
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("mirror.png");
+    let run = |depth: &str| {
+        barytex()
+            .args([
+                "demo",
+                "--mirror",
+                "--stats",
+                "--size",
+                "64x36",
+                "--portal-depth",
+                depth,
+                "-o",
+            ])
+            .arg(&out)
+            .output()
+            .unwrap()
+    };
+    let output = run("4");
+    assert!(output.status.success(), "{output:?}");
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        stdout.contains("built-in demo scene with a mirror")
+            && stdout
+                .contains("portals: 1 in the scene, 0 not drawable (degenerate); 1 views drawn"),
+        "{stdout}"
+    );
+    let closed = String::from_utf8(run("0").stdout).unwrap();
+    assert!(
+        closed.contains("0 views drawn through them, 1 seen closed (at --portal-depth 0)"),
+        "{closed}"
+    );
+    let _ = std::fs::remove_file(&out);
+    let output = run("17");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(!output.status.success(), "{output:?}");
+    assert!(
+        stderr.contains("from 0 to 16") && !stderr.contains("panicked"),
+        "{stderr}"
+    );
+    assert!(!out.exists(), "--portal-depth 17 wrote an image");
+    let _ = std::fs::remove_dir_all(&dir);
+}

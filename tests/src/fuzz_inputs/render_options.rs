@@ -198,6 +198,8 @@ pub fn render_options_input(bytes: &[u8]) -> RenderOptions {
         background: Vec4::new(unorm(9), unorm(10), unorm(11), unorm(12)),
         fog,
         measure_stages: flags & 4 != 0,
+        // The scene has no portals: the depth changes nothing, so no byte decodes it.
+        portal_depth: RenderOptions::default().portal_depth,
     }
 }
 

@@ -28,6 +28,10 @@ fn check(p: Vec3, tri: [Vec3; 3]) -> Result<(), String> {
     let k = kappa(p, tri);
     for (g, w) in got.weights.iter().zip(&want) {
         let w64 = exact::to_f64(w);
+        if g.is_infinite() && *g == w64 as f32 {
+            // The exact weight is beyond f32: its infinity is the rounded value.
+            continue;
+        }
         let err = exact::abs_diff(&qf(*g), w);
         let bound = ulp_f32(w64) + k * 2f64.powi(-46);
         if err > bound {
@@ -175,4 +179,52 @@ fn exactly_collinear_with_exponent_gaps_is_degenerate() {
             Some(_) => check(Vec3::ONE, tri).unwrap(),
         }
     }
+}
+
+/// Points far from a small triangle (up to 2⁶⁰ of its size away, off its plane and in it), at
+/// scales from 2⁻⁶⁰ to 2⁴⁰: the bound holds at every distance. The f64 form
+/// `((b − p) × (c − p))·n` missed it beyond about 32 edge lengths (its rounding grows with the
+/// square of the distance); the fuzz target `interp_3d` found the case below.
+#[test]
+fn far_points_within_bar() {
+    // Fuzz `interp_3d` (`fuzz/regressions/interp_3d/crash-54d6…`): exact weight 6.24e50 (beyond
+    // f32, so +∞), once computed as 0.
+    let p = Vec3::new(0.25, 0.25, f32::from_bits(0x5555_5554));
+    let tri = [
+        Vec3::new(f32::from_bits(0xa2f7_a3ed), 0.0, f32::from_bits(3)),
+        Vec3::new(
+            f32::from_bits(0x3f00),
+            f32::from_bits(0x80),
+            f32::from_bits(0x00ff_ffff),
+        ),
+        Vec3::new(f32::from_bits(0xff00), -0.0, f32::from_bits(0x8000_003f)),
+    ];
+    check(p, tri).unwrap();
+    let mut rng = barytex_testkit::seeded::XorShift::new(0xfa7);
+    let mut worst_ratio = 0.0f64;
+    for i in 0..4000 {
+        let scale = 2f32.powi(-60 + (i % 100));
+        let far = 2f32.powi(i % 61);
+        let a = rng.vec3_in(-1.0, 1.0) * scale;
+        let tri = [
+            a,
+            a + rng.vec3_in(-1.0, 1.0) * scale,
+            a + rng.vec3_in(-1.0, 1.0) * scale,
+        ];
+        if exact::barycentric_3d(Vec3::ZERO, tri).is_none() {
+            continue;
+        }
+        let p = a + rng.vec3_in(-1.0, 1.0) * (scale * far);
+        check(p, tri).unwrap_or_else(|e| panic!("case {i}: {e}"));
+        let got = barycentric_3d(p, tri).unwrap().weights;
+        let want = exact::barycentric_3d(p, tri).unwrap();
+        let k = kappa(p, tri);
+        for (g, w) in got.iter().zip(&want) {
+            if g.is_finite() {
+                let excess = exact::abs_diff(&qf(*g), w) - ulp_f32(exact::to_f64(w));
+                worst_ratio = worst_ratio.max(excess / (k * 2f64.powi(-46)));
+            }
+        }
+    }
+    println!("far points: worst (error − 1 ulp) / (2⁻⁴⁶·κ) = {worst_ratio:.3e}");
 }

@@ -166,3 +166,34 @@ fn homogeneous_points_follow_the_laws() {
     assert_eq!(a.lerp(b, 1.0), b);
     assert_eq!(a.lerp(a, 0.37), a);
 }
+
+/// Issue 20, item 3: the partition-of-unity bound keeps its underflow term `n·2⁻¹⁴⁹` for f32
+/// components: subnormal values times weights round to the fixed subnormal spacing.
+#[test]
+fn partition_of_unity_with_subnormals() {
+    let mut runner = TestRunner::new(Config {
+        cases: 512,
+        ..Config::default()
+    });
+    let tiny = (0u32..(3 << 23), any::<bool>())
+        .prop_map(|(bits, negative)| f32::from_bits(bits | (u32::from(negative) << 31)));
+    runner
+        .run(&(tiny, (-3.0f32..3.0, -3.0f32..3.0)), |(a, (w0, w1))| {
+            let w = [w0, w1, 1.0 - w0 - w1];
+            let wsum: f64 = w.iter().map(|&x| f64::from(x)).sum();
+            let wabs: f64 = w.iter().map(|&x| f64::from(x).abs()).sum();
+            let eps = f64::from(f32::EPSILON);
+            let want = f64::from(a);
+            for got in [
+                f64::from(interpolate3([a, a, a], w)),
+                f64::from(interpolate3([Vec3::splat(a); 3], w).y),
+            ] {
+                let bound = 4.0 * eps * wabs * want.abs()
+                    + (wsum - 1.0).abs() * want.abs()
+                    + 3.0 * 2f64.powi(-149);
+                prop_assert!((got - want).abs() <= bound, "{a:e} {w:?}: {got:e}");
+            }
+            Ok(())
+        })
+        .unwrap();
+}

@@ -151,3 +151,110 @@ fn projection_example() {
     assert_eq!(segment_parameter_2d(x1.lerp(x2, 0.75), x1, x2), Ok(0.75));
     assert_eq!(segment_parameter_2d(Vec2::new(2.0, 4.0), x1, x2), Ok(0.5));
 }
+
+/// Subnormal and smallest-normal f32 values of either sign (exponent field 0, 1 or 2), where the
+/// products of `lerp` round to the fixed spacing `2⁻¹⁴⁹` rather than relatively.
+fn tiny_f32() -> impl Strategy<Value = f32> + Clone {
+    (0u32..(3 << 23), any::<bool>())
+        .prop_map(|(bits, negative)| f32::from_bits(bits | (u32::from(negative) << 31)))
+}
+
+/// As [`tiny_f32`] for f64 (exponent field 0, 1 or 2).
+fn tiny_f64() -> impl Strategy<Value = f64> + Clone {
+    (0u64..(3 << 52), any::<bool>())
+        .prop_map(|(bits, negative)| f64::from_bits(bits | (u64::from(negative) << 63)))
+}
+
+/// Issue 20, item 3: the relative bound alone cannot hold where the result is subnormal (its
+/// spacing is `2⁻¹⁴⁹`, not relative); `lerp(1e-45, 3e-45, 0.5)` is 7e-46 off.
+#[test]
+fn underflow_needs_the_absolute_term() {
+    let (a, b) = (1e-45f32, 3e-45f32);
+    let x = lerp(a, b, 0.5);
+    let err = abs_diff(&qf(x), &exact_lerp(a.into(), b.into(), 0.5));
+    let relative = 2.0 * f64::from(f32::EPSILON) * f64::from(a.abs().max(b.abs()));
+    assert!(
+        err > relative,
+        "the example shows the relative term is not enough"
+    );
+    assert!(err <= relative + 2f64.powi(-149), "{err:e}");
+}
+
+proptest! {
+    /// `lerp`'s bound with its underflow term, `2·ε·max(|a|, |b|) + 2⁻¹⁴⁹`, on subnormal and
+    /// smallest-normal endpoints (also mixed with ordinary ones).
+    #[test]
+    fn lerp_accuracy_bound_with_subnormals(a in tiny_f32(), b in prop_oneof![tiny_f32(), -1e-30f32..1e-30], t in 0.0f32..=1.0) {
+        for (a, b) in [(a, b), (b, a)] {
+            let x = lerp(a, b, t);
+            let err = abs_diff(&qf(x), &exact_lerp(a.into(), b.into(), t.into()));
+            let bound = 2.0 * f64::from(f32::EPSILON) * f64::from(a.abs().max(b.abs())) + 2f64.powi(-149);
+            prop_assert!(err <= bound, "lerp({a:e}, {b:e}, {t}) = {x:e}, error {err:e} > {bound:e}");
+        }
+    }
+
+    /// `lerp_f64`'s bound with its underflow term, `2·ε·max(|a|, |b|) + 2⁻¹⁰⁷⁴`.
+    #[test]
+    fn lerp_f64_accuracy_bound_with_subnormals(a in tiny_f64(), b in prop_oneof![tiny_f64(), -1e-300f64..1e-300], t in 0.0f64..=1.0) {
+        for (a, b) in [(a, b), (b, a)] {
+            let x = lerp_f64(a, b, t);
+            let err = abs_diff(&q(x).unwrap(), &exact_lerp(a, b, t));
+            let bound = 2.0 * f64::EPSILON * a.abs().max(b.abs()) + 2f64.powi(-1074);
+            prop_assert!(err <= bound, "lerp_f64({a:e}, {b:e}, {t}) = {x:e}, error {err:e} > {bound:e}");
+        }
+    }
+
+    /// Issue 20, item 6: `inverse_lerp` is within one ulp of the exact quotient for any finite
+    /// f32 inputs (any magnitudes, subnormals included), not only within 2²⁹ of each other: the
+    /// f64 differences and quotient err by at most `3·2⁻⁵³` relative before the one rounding to f32.
+    #[test]
+    fn inverse_lerp_is_within_one_ulp_at_any_magnitude(a in finite_bits_f32(), b in finite_bits_f32(), x in finite_bits_f32()) {
+        prop_assume!(a != b);
+        let got = inverse_lerp(a, b, x).unwrap();
+        let exact = (qf(x) - qf(a)) / (qf(b) - qf(a));
+        let nearest = barytex_testkit::exact::to_f64(&exact) as f32;
+        if nearest.is_infinite() {
+            prop_assert_eq!(got, nearest);
+        } else {
+            prop_assert!(ulps_between_f32(got, nearest) <= 1, "inverse_lerp({a:e}, {b:e}, {x:e}) = {got:e} vs {nearest:e}");
+        }
+    }
+
+    /// Issue 20, item 6: `segment_parameter_2d`/`_3d` at any magnitudes, against exact rationals:
+    /// within `1 ulp + 2⁻⁴⁷·|u − x1|/|x2 − x1|` (the f64 rounding of the differences, the dot
+    /// product and the quotient, at most `11·2⁻⁵³` times the condition `|u − x1|/|x2 − x1|`,
+    /// then one rounding to f32), and within one ulp whenever that term is below half an ulp.
+    #[test]
+    fn segment_parameter_within_its_condition_bound(
+        x1 in vec3_in(-1.0, 1.0), d in vec3_in(-1.0, 1.0), u in vec3_in(-1.0, 1.0),
+        scales in (-40i32..40, -40i32..40, -40i32..40),
+    ) {
+        let (x1, d, u) = (x1 * 2f32.powi(scales.0), d * 2f32.powi(scales.1), u * 2f32.powi(scales.2));
+        let x2 = x1 + d;
+        prop_assume!(x1 != x2 && x2.is_finite());
+        for dim in [2usize, 3] {
+            let take = |v: Vec3| if dim == 2 { v.truncate().extend(0.0) } else { v };
+            let (x1, x2, u) = (take(x1), take(x2), take(u));
+            prop_assume!(x1 != x2);
+            let got = if dim == 2 {
+                segment_parameter_2d(u.truncate(), x1.truncate(), x2.truncate()).unwrap()
+            } else {
+                segment_parameter_3d(u, x1, x2).unwrap()
+            };
+            let dd: Vec<Q> = (0..3).map(|i| qf(x2[i]) - qf(x1[i])).collect();
+            let uu: Vec<Q> = (0..3).map(|i| qf(u[i]) - qf(x1[i])).collect();
+            let num: Q = (0..3).map(|i| &uu[i] * &dd[i]).sum();
+            let den: Q = (0..3).map(|i| &dd[i] * &dd[i]).sum();
+            let exact = num / den;
+            let exact64 = barytex_testkit::exact::to_f64(&exact);
+            let condition = (u.as_dvec3() - x1.as_dvec3()).length() / (x2.as_dvec3() - x1.as_dvec3()).length();
+            let ulp = barytex_testkit::ulp::ulp_f32(exact64);
+            let bound = ulp + 2f64.powi(-47) * condition;
+            let err = abs_diff(&qf(got), &exact);
+            prop_assert!(err <= bound, "{dim}D: {got:e} vs {exact64:e}, error {err:e} > {bound:e}");
+            if 2f64.powi(-47) * condition <= 0.5 * ulp {
+                prop_assert!(ulps_between_f32(got, exact64 as f32) <= 1, "{got:e} vs {exact64:e}");
+            }
+        }
+    }
+}

@@ -9,6 +9,7 @@ use barytex_interp::{
     SLERP_F32_LENGTH_BOUND, SLERP_F64_ANGLE_BOUND, SLERP_F64_LENGTH_BOUND, interpolate_normal,
     renormalize_spacing_error, slerp, slerp_along, try_slerp, try_slerp_along,
 };
+use barytex_testkit::precise;
 use barytex_testkit::seeded::XorShift;
 use barytex_testkit::sphere::{self, errors};
 use barytex_testkit::strategies::bits_f32;
@@ -491,4 +492,242 @@ fn f64_variants_agree_with_f32_on_easy_inputs() {
     let r = slerp(a, b, 0.3);
     let r32 = slerp(a.as_vec3(), b.as_vec3(), 0.3);
     assert!((r.as_vec3() - r32).length() < 2.0 * SLERP_F32_ANGLE_BOUND);
+}
+
+/// The f32 `slerp` of `a`, `b` at `t` against the 200-bit reference of the directions, with the
+/// perpendicular the code takes for exactly opposite inputs.
+fn vec3_errors_precise(a: Vec3, b: Vec3, t: f32) -> (f64, f64) {
+    let perp = a.as_dvec3().normalize().any_orthonormal_vector();
+    let arc = precise::Arc::new(&f64s(a.to_array()), &f64s(b.to_array()), &perp.to_array())
+        .expect("nonzero inputs");
+    precise::errors(&f64s(slerp(a, b, t).to_array()), &arc.at(f64::from(t)))
+}
+
+/// As [`vec3_errors_precise`] for quaternions on `path`.
+fn quat_errors_precise(a: Quat, b: Quat, t: f32, path: QuatPath) -> (f64, f64) {
+    let r = slerp_along(a, b, t, path);
+    let b = if path == QuatPath::Shortest && a.dot(b) < 0.0 {
+        -b
+    } else {
+        b
+    };
+    let perp = Vec4::new(a.y, -a.x, a.w, -a.z);
+    let arc = precise::Arc::new(
+        &f64s(a.to_array()),
+        &f64s(b.to_array()),
+        &f64s(perp.to_array()),
+    )
+    .expect("nonzero inputs");
+    precise::errors(&f64s(r.to_array()), &arc.at(f64::from(t)))
+}
+
+/// Whether the f32 SLERP uses `v` as given: its squared length, computed in f64 (exact products),
+/// within `4·ε` of 1.
+fn accepted_as_unit(v: &[f32]) -> bool {
+    let len2: f64 = v.iter().map(|&x| f64::from(x) * f64::from(x)).sum();
+    (len2 - 1.0).abs() <= 4.0 * f64::from(f32::EPSILON)
+}
+
+/// `u` scaled by `1 + δ` and rounded to f32: squared lengths spread over `1 ± 6ε`, across the
+/// unit tolerance's edge on both sides.
+fn near_unit(u: Vec3, rng: &mut XorShift) -> Vec3 {
+    let delta = f64::from(rng.f32_in(-3.0, 3.0)) * f64::from(f32::EPSILON);
+    (u.as_dvec3() * (1.0 + delta)).as_vec3()
+}
+
+/// Issue 20, item 1: at the edge of the unit tolerance all three claims hold together — ends bit
+/// exact (for inputs the tolerance accepts), length within `SLERP_F32_LENGTH_BOUND` and angle
+/// within `SLERP_F32_ANGLE_BOUND` of the SLERP of the inputs' directions — once the tolerance is
+/// decided in f64 (so an accepted input is within 2.385e-7 of unit length) and the arc is
+/// computed from the inputs divided by their f64 lengths.
+#[test]
+fn inputs_at_the_edge_of_the_unit_tolerance() {
+    // The audit's cases: 2.48e-7 rad off at t = 0.99, and an input 3.06e-7 off unit length that
+    // was accepted (by an f32 squared length within 4ε of 1) and returned at t = 0.
+    let a = Vec3::new(0.804_116_25, 0.548_267_84, -0.229_782_48);
+    let b = Vec3::new(-0.984_735_6, -0.038_564_228, 0.169_730_98);
+    let (angle, length) = vec3_errors_precise(a, b, 0.99);
+    assert!(angle <= f64::from(SLERP_F32_ANGLE_BOUND), "{angle:e}");
+    assert!(length <= f64::from(SLERP_F32_LENGTH_BOUND), "{length:e}");
+    let a = Vec3::new(-0.411_605_72, 0.734_760_4, -0.539_173_9);
+    let at_zero = slerp(a, Vec3::X, 0.0);
+    assert_eq!(at_zero == a, accepted_as_unit(&a.to_array()));
+    let (angle, length) = vec3_errors_precise(a, Vec3::X, 0.0);
+    assert!(
+        angle <= 1e-7 && length <= f64::from(SLERP_F32_LENGTH_BOUND),
+        "{angle:e} {length:e}"
+    );
+
+    let mut rng = XorShift::new(0xed9e);
+    let mut worst = Worst::default();
+    let (mut accepted, mut rejected) = (0, 0);
+    for (a, b, t) in sphere::vec3_pairs(&mut rng.clone(), 3_000, std::f32::consts::PI) {
+        let (a, b) = (near_unit(a, &mut rng), near_unit(b, &mut rng));
+        for (v, at) in [(a, 0.0f32), (b, 1.0)] {
+            let end = slerp(a, b, at);
+            if accepted_as_unit(&v.to_array()) {
+                accepted += 1;
+                assert_eq!(end, v, "accepted inputs are returned as given");
+            } else {
+                rejected += 1;
+            }
+        }
+        for t in PARAMETERS.into_iter().chain([t, 0.99]) {
+            worst.add(vec3_errors_precise(a, b, t), || {
+                format!("{a:?} {b:?} t={t}")
+            });
+        }
+    }
+    println!(
+        "edge of the unit tolerance ({accepted} ends as given, {rejected} normalized): {worst:?}"
+    );
+    assert!(
+        accepted > 1000 && rejected > 1000,
+        "both sides of the edge are sampled"
+    );
+    assert!(worst.angle <= f64::from(SLERP_F32_ANGLE_BOUND), "{worst:?}");
+    assert!(
+        worst.length <= f64::from(SLERP_F32_LENGTH_BOUND),
+        "{worst:?}"
+    );
+}
+
+/// Issue 20, item 2: nearly opposite inputs that are not quite unit. The plane of the arc is set
+/// by `b + a`, far smaller than the rounding of an f32 normalization; the arc is computed from the
+/// exact inputs (their minors), so the bounds hold against the SLERP of the directions down to
+/// exactly opposite. Reference: 200-bit fixed point from the exact inputs.
+#[test]
+fn nearly_opposite_not_quite_unit_inputs() {
+    // The audit's case: 0.109 rad off when the inputs were normalized in f32 first.
+    let a = Quat::from_xyzw(-0.301_563_83, 0.707_113, 0.553_461_1, 0.320_517_24);
+    let b = Quat::from_xyzw(0.301_563_83, -0.707_113_3, -0.553_461_2, -0.320_517_24);
+    let (angle, length) = quat_errors_precise(a, b, 0.521_981_8, QuatPath::AsGiven);
+    println!("audit case: angle {angle:e}, length {length:e}");
+    assert!(angle <= f64::from(SLERP_F32_ANGLE_BOUND), "{angle:e}");
+    assert!(length <= f64::from(SLERP_F32_LENGTH_BOUND), "{length:e}");
+
+    let mut rng = XorShift::new(0x0bb0);
+    let mut worst = Worst::default();
+    for i in 0..1_500 {
+        let u = sphere::unit_quat(&mut rng).to_array().map(f64::from);
+        let dir = sphere::unit_quat(&mut rng).to_array().map(f64::from);
+        // b = −u·(1 + δ) + 10^(−k)·dir: from 0.1 down to 1e-12 off opposite, lengths off unit by
+        // up to 30 ε (outside the tolerance) or within it.
+        let k = f64::from(1 + i % 12);
+        let (da, db) = (
+            f64::from(rng.f32_in(-30.0, 30.0)) * f64::from(f32::EPSILON),
+            f64::from(rng.f32_in(-30.0, 30.0)) * f64::from(f32::EPSILON),
+        );
+        let a = Vec4::from_array(u.map(|x| (x * (1.0 + da)) as f32));
+        let b = Vec4::from_array(core::array::from_fn(|j| {
+            (-u[j] * (1.0 + db) + 10f64.powf(-k) * dir[j]) as f32
+        }));
+        let (a, b) = (Quat::from_vec4(a), Quat::from_vec4(b));
+        for t in PARAMETERS
+            .into_iter()
+            .chain([rng.f32_in(0.0, 1.0), -1.5, 2.5])
+        {
+            let (angle, length) = quat_errors_precise(a, b, t, QuatPath::AsGiven);
+            // Outside [0, 1] the angle bound grows with |t| (see the extrapolation test).
+            let scale = f64::from(t.abs().max(1.0));
+            worst.add((angle / scale, length), || format!("{a:?} {b:?} t={t}"));
+        }
+        // Vectors too: the first three components, as given and scaled by powers of two (exact,
+        // same directions) to 2¹⁰⁰ and 2⁻¹²⁰.
+        let (a3, b3) = (a.xyz(), b.xyz());
+        for t in PARAMETERS {
+            worst.add(vec3_errors_precise(a3, b3, t), || {
+                format!("{a3:?} {b3:?} t={t}")
+            });
+            let (big, small) = (a3 * 2f32.powi(100), b3 * 2f32.powi(-120));
+            worst.add(vec3_errors_precise(big, small, t), || {
+                format!("{big:?} {small:?} t={t}")
+            });
+        }
+    }
+    // Exactly opposite but of different lengths: the documented perpendicular's half turn.
+    let a = Vec3::new(0.6, 0.8, 0.0);
+    for b in [-a, -2.0 * a, -0.5 * a] {
+        worst.add(vec3_errors_precise(a, b, 0.5), || {
+            format!("{a:?} {b:?} opposite")
+        });
+    }
+    println!("nearly opposite, not quite unit: {worst:?}");
+    assert!(worst.angle <= f64::from(SLERP_F32_ANGLE_BOUND), "{worst:?}");
+    assert!(
+        worst.length <= f64::from(SLERP_F32_LENGTH_BOUND),
+        "{worst:?}"
+    );
+}
+
+/// Issue 20, item 6: the f64 SLERPs against the 200-bit reference (an f64 reference cannot see
+/// their errors). Inputs: f64 unit vectors at every angle, within 1e-12 of equal and opposite,
+/// at the edge of the f64 unit tolerance, and quaternions on both paths.
+#[test]
+fn exact_slerp_f64_against_a_precise_reference() {
+    let mut rng = XorShift::new(0xf64f);
+    let mut worst = Worst::default();
+    let mut worst_extrapolated = 0.0f64;
+    let unit = |rng: &mut XorShift| {
+        let v = DVec3::new(
+            f64::from(rng.f32_in(-1.0, 1.0)) + f64::from(rng.f32_in(-1.0, 1.0)) * 1e-8,
+            f64::from(rng.f32_in(-1.0, 1.0)) + f64::from(rng.f32_in(-1.0, 1.0)) * 1e-8,
+            f64::from(rng.f32_in(-1.0, 1.0)),
+        );
+        v.normalize()
+    };
+    for i in 0..1_500 {
+        let a = unit(&mut rng);
+        let c = unit(&mut rng);
+        let b = match i % 4 {
+            0 => c,
+            1 => (a + c * 10f64.powi(-(i % 13))).normalize(),
+            2 => (-a + c * 10f64.powi(-(i % 13))).normalize(),
+            // Off unit length by up to 3 ε: across the f64 tolerance's edge.
+            _ => c * (1.0 + f64::from(rng.f32_in(-3.0, 3.0)) * f64::EPSILON),
+        };
+        let perp = a.normalize().any_orthonormal_vector();
+        let arc =
+            precise::Arc::new(&a.to_array(), &b.to_array(), &perp.to_array()).expect("nonzero");
+        for t in PARAMETERS.map(f64::from) {
+            let r = slerp(a, b, t);
+            worst.add(precise::errors(&r.to_array(), &arc.at(t)), || {
+                format!("{a:?} {b:?} t={t}")
+            });
+        }
+        for t in [-2.0, 3.5] {
+            let (angle, length) = precise::errors(&slerp(a, b, t).to_array(), &arc.at(t));
+            worst_extrapolated = worst_extrapolated.max(angle / t.abs());
+            assert!(
+                length <= SLERP_F64_LENGTH_BOUND,
+                "{a:?} {b:?} {t}: {length:e}"
+            );
+        }
+        let (qa, qb) = (
+            DQuat::from_axis_angle(a, f64::from(i) * 0.004),
+            DQuat::from_axis_angle(c, 6.0 - f64::from(i) * 0.003),
+        );
+        for path in [QuatPath::Shortest, QuatPath::AsGiven] {
+            let qb_path = if path == QuatPath::Shortest && qa.dot(qb) < 0.0 {
+                -qb
+            } else {
+                qb
+            };
+            let perp = [qa.y, -qa.x, qa.w, -qa.z];
+            let arc =
+                precise::Arc::new(&qa.to_array(), &qb_path.to_array(), &perp).expect("nonzero");
+            let t = f64::from(rng.f32_in(0.0, 1.0));
+            let q = slerp_along(qa, qb, t, path);
+            worst.add(precise::errors(&q.to_array(), &arc.at(t)), || {
+                format!("{qa:?} {qb:?} t={t} {path:?}")
+            });
+        }
+    }
+    println!("f64 against 200-bit: {worst:?}; extrapolated per unit |t| {worst_extrapolated:e}");
+    assert!(worst.angle <= SLERP_F64_ANGLE_BOUND, "{worst:?}");
+    assert!(worst.length <= SLERP_F64_LENGTH_BOUND, "{worst:?}");
+    assert!(
+        worst_extrapolated <= SLERP_F64_ANGLE_BOUND,
+        "{worst_extrapolated:e}"
+    );
 }

@@ -197,7 +197,8 @@ pub fn triangles_2d() -> impl Iterator<Item = TriangleCase> {
     slivers.chain(offsets).chain(tiny).chain(fixed)
 }
 
-/// The 3D triangle table: tilted slivers of aspect 1e-3 … 1e-7 and offsets 1e4 … 1e7.
+/// The 3D triangle table: tilted slivers of aspect 1e-3 … 1e-7, offsets 1e4 … 1e7, and points
+/// 1e3, 1e8 and 1e13 triangle sizes away from a small triangle.
 pub fn triangles_3d() -> impl Iterator<Item = Triangle3Case> {
     let slivers = ASPECTS.into_iter().map(|k| {
         let a = Vec3::new(0.0, 0.0, 0.0);
@@ -223,7 +224,24 @@ pub fn triangles_3d() -> impl Iterator<Item = Triangle3Case> {
             point: base + Vec3::new(250.0, 500.0, 250.0),
         }
     });
-    slivers.chain(offsets)
+    // A point far from a small triangle (off its plane and off its span), where the weights'
+    // old form ((b − p) × (c − p))·n rounded away (fuzz `interp_3d` found distance 1e13 at size
+    // 1e-17); parameter: the distance over the triangle's size.
+    let far = [1e3f32, 1e8, 1e13].into_iter().map(|d| {
+        let size = 1e-3;
+        let a = Vec3::new(0.1, -0.2, 0.05);
+        Triangle3Case {
+            name: "far point",
+            parameter: d,
+            triangle: [
+                a,
+                a + Vec3::new(size, 0.0, 0.0),
+                a + Vec3::new(0.0, size, 0.0),
+            ],
+            point: a + Vec3::new(0.3, 0.6, 0.7) * (size * d),
+        }
+    });
+    slivers.chain(offsets).chain(far)
 }
 
 /// The quad table: Denisjuk's Example 10 quad, an exact parallelogram (A = 0, where thresholded

@@ -56,7 +56,10 @@ fn half_angle_tan(area: f64, dot: f64, r_product: f64) -> f64 {
 /// Inside: `|Σλᵢ − 1| ≤ ε` and linear precision `|Σλᵢ(vᵢ − p)| ≤ ε·Σλᵢ|vᵢ − p|` (`ε = 2⁻²³`;
 /// plus `n·2⁻¹⁴⁹·max|vᵢ − p|` for weights in f32's subnormal range), every weight ≥ 0, at any
 /// scale, offset and closeness to an edge or vertex; each weight within `2⁻²²` of an f64
-/// `atan2` reference on well-shaped polygons. Outside: partition within `ε·Σ|λᵢ|`, and linear
+/// `atan2` reference on well-shaped polygons — as tested: strictly convex, 3–16 vertices on an
+/// ellipse with semi-axes 0.5 … 5 at angles `2π·gᵢ/Σg` apart with `gᵢ ∈ [0.2, 1]` (no gap more
+/// than 5× another), the point an interior combination of the vertices with weights
+/// 0.001 … 1 (the reference's own `atan2` angles lose accuracy near the boundary). Outside: partition within `ε·Σ|λᵢ|`, and linear
 /// precision within `ε·Σ|λᵢ||vᵢ − p| + 2⁻²⁶·Σ|tan(αᵢ/2)|/|Σwⱼ|` (the terms
 /// `tan(αᵢ₋₁/2) + tan(αᵢ/2)` of opposite signs cancel there). Tests:
 /// `polygon_coordinates.rs::{mean_value_matches_atan2_reference, hard_cases_hold}` and every

@@ -15,7 +15,10 @@ use glam::{DQuat, DVec2, DVec3, DVec4, Quat, Vec2, Vec3, Vec3A, Vec4};
 
 use super::short_arc::slerp_short_arc;
 use super::trig::{Libm, Poly, Trig, select};
-use super::unit_vector::{Ops, unit};
+use super::unit_vector::{
+    Ops, Wide, cosine_minus_one, inverse_length, inverse_length_far, inverse_length_near,
+    is_near_unit, unit, unit_within,
+};
 #[allow(unused_imports)] // doc links
 use super::{
     SLERP_F32_ANGLE_BOUND, SLERP_F32_LENGTH_BOUND, SLERP_F64_ANGLE_BOUND, SLERP_F64_LENGTH_BOUND,
@@ -42,12 +45,18 @@ pub enum QuatPath {
 /// Relative size below which the perpendicular part of `b` is rounding noise (4·ε).
 const PARALLEL_TOLERANCE: f64 = 4.0 * f64::EPSILON;
 
-/// SLERP of unit vectors in f64, any finite `t`, with the trigonometry of `K`.
+/// SLERP of unit vectors in f64 (the f64 API), any finite `t`, with the trigonometry of `K`.
+///
+/// `a` and `b` are unit to a few ulps (within [`F64_UNIT_TOLERANCE`] of unit squared length, or
+/// normalized by [`unit`]); `a`'s own length is divided out, so the result is unit to the f64
+/// rounding of its last steps.
 #[inline]
 pub(crate) fn slerp_unit<V: Ops<Scalar = f64>, K: Trig>(a: V, b: V, t: f64) -> V {
     let cos_theta = a.dot(b);
     // Off the critical path: computed while a·b is.
-    let inv_aa = 1.0 / a.dot(a);
+    let aa = a.dot(a);
+    let inv_aa = 1.0 / aa;
+    let a_hat = a.scale(inverse_length(aa));
     // The part of `b` perpendicular to `a`, `p = n − ((a·n)/(a·a))·a`, from whichever of
     // `n = b ∓ a` is the short vector, so that what remains is the subtraction of a small
     // correction. Dividing by `a·a` rather than assuming 1 keeps `p` perpendicular to `a` when
@@ -69,6 +78,7 @@ pub(crate) fn slerp_unit<V: Ops<Scalar = f64>, K: Trig>(a: V, b: V, t: f64) -> V
     if p2 < 0.25 * near2 {
         p2 = along.dot(along);
     }
+    // |p| = |b|·sin θ; `b`'s length is divided out of the angle below with `a·b/|a|`.
     let sin_theta = crate::math::sqrt(p2);
     // Started now, the division runs in parallel with the trigonometry.
     let inv_sin_theta = 1.0 / sin_theta;
@@ -78,26 +88,42 @@ pub(crate) fn slerp_unit<V: Ops<Scalar = f64>, K: Trig>(a: V, b: V, t: f64) -> V
     if sin_theta <= PARALLEL_TOLERANCE * crate::math::sqrt(near2) || sin_theta == 0.0 {
         if cos_theta >= 0.0 {
             // The same direction (or the difference underflows): the arc is a point.
-            return a;
+            return a_hat;
         }
         // Exactly opposite: every great circle through a and b is an arc of length π. Take the
         // documented deterministic one, through `a.perpendicular()`.
         let (st, ct) = K::sin_cos(t * core::f64::consts::PI);
-        return a.scale(ct).add(a.perpendicular().scale(st));
+        return a_hat.scale(ct).add(a_hat.perpendicular().scale(st));
     }
-    let theta = K::atan2(sin_theta, cos_theta);
+    let theta = K::atan2(sin_theta, cos_theta * inverse_length(aa));
     let (st, ct) = K::sin_cos(t * theta);
-    a.scale(ct).add(along.scale(st * inv_sin_theta))
+    a_hat.scale(ct).add(along.scale(st * inv_sin_theta))
 }
 
-/// The checked f64 entry: unit-normalized inputs (see [`unit`]) and a finite `t`, else `None`;
-/// exact endpoints.
+/// Squared-length tolerance of the f64 API's unit test: `2·ε` (f64 ε). The f64 dot product that
+/// computes `a·a` errs by at most `2·ε` itself, so an accepted input's length is within
+/// `√(1 + 4ε) − 1 ≤ 2ε` (4.5e-16) of 1 — below [`SLERP_F64_LENGTH_BOUND`] even at the ends, where
+/// the input is returned as given.
+const F64_UNIT_TOLERANCE: f64 = 2.0 * f64::EPSILON;
+
+/// Squared-length tolerance of the f32 API's unit test: `4·ε` (f32 ε), applied to `a·a`
+/// computed in f64 from the f32 components (exact products, one rounding of 2⁻⁵² at most). An
+/// accepted input's length is within `√(1 + 4ε) − 1 < 2ε` (2.385e-7) of 1 — below
+/// [`SLERP_F32_LENGTH_BOUND`] even at the ends, where the input is returned as given. glam's
+/// `normalize` output passes.
+pub(crate) const F32_UNIT_TOLERANCE: f64 = 4.0 * f32::EPSILON as f64;
+
+/// The checked f64 entry: inputs within [`F64_UNIT_TOLERANCE`] of unit squared length used as
+/// given, others normalized (see [`unit`]); a finite `t`, else `None`; exact endpoints.
 #[inline]
 fn try_slerp_f64<V: Ops<Scalar = f64>>(a: V, b: V, t: f64) -> Option<V> {
     if !t.is_finite() {
         return None;
     }
-    let (a, b) = (unit(a)?, unit(b)?);
+    let (a, b) = (
+        unit_within(a, F64_UNIT_TOLERANCE)?,
+        unit_within(b, F64_UNIT_TOLERANCE)?,
+    );
     Some(if t == 0.0 {
         a
     } else if t == 1.0 {
@@ -107,34 +133,100 @@ fn try_slerp_f64<V: Ops<Scalar = f64>>(a: V, b: V, t: f64) -> Option<V> {
     })
 }
 
-/// The checked f32 entry: normalized in f32 (so unit inputs keep their bits and the endpoints
-/// are exact), computed in f64 — arcs up to 90° with `t ∈ [0, 1]` by the series of
-/// [`slerp_short_arc`], others with the polynomial trigonometry — and rounded once at the end.
+/// The checked f32 entry. The inputs are widened to f64 exactly and never normalized in f32:
+/// an input whose squared length (in f64) is within [`F32_UNIT_TOLERANCE`] of 1 is returned as
+/// given at its end (`t = 0` or `1`, or both inputs equal), any other is divided by its f64
+/// length there; in between, the arc is that of the inputs' directions, computed from the exact
+/// inputs ([`slerp_directions`]) and rounded once to f32.
 #[inline]
-fn try_slerp_f32<V: Ops<Scalar = f32> + PartialEq, W: Ops<Scalar = f64>>(
+fn try_slerp_f32<V: Ops<Scalar = f32> + PartialEq, W: Wide>(
     a: V,
     b: V,
     t: f32,
     widen: impl Fn(V) -> W,
     narrow: impl Fn(W) -> V,
 ) -> Option<V> {
-    if !t.is_finite() {
+    let (wa, wb) = (widen(a), widen(b));
+    let (aa, bb) = (wa.dot(wa), wb.dot(wb));
+    // For finite f32 components a·a is finite (≤ 4.7e77) and, unless all are zero, at least
+    // 2⁻²⁹⁸: no overflow, no underflow, so this one test finds the zero and non-finite inputs.
+    if !(t.is_finite() && aa > 0.0 && aa.is_finite() && bb > 0.0 && bb.is_finite()) {
         return None;
     }
-    let (a, b) = (unit(a)?, unit(b)?);
+    let end = |v: V, w: W, len2: f64| {
+        if (len2 - 1.0).abs() <= F32_UNIT_TOLERANCE {
+            v
+        } else {
+            narrow(w.scale(inverse_length(len2)))
+        }
+    };
     // Equal inputs: the arc is a point (the series would round it to a neighbour).
     Some(if t == 0.0 || a == b {
-        a
+        end(a, wa, aa)
     } else if t == 1.0 {
-        b
+        end(b, wb, bb)
+    } else if is_near_unit(aa, bb) {
+        // The common case: inverse lengths and `â·b̂ − 1` by short series, no square root.
+        let ab = wa.dot(wb);
+        let inverse_lengths = (inverse_length_near(aa), inverse_length_near(bb));
+        let y = cosine_minus_one(ab, aa, bb);
+        narrow(slerp_directions(
+            wa,
+            wb,
+            ab,
+            inverse_lengths,
+            y,
+            f64::from(t),
+        ))
     } else {
-        let (a, b, t) = (widen(a), widen(b), f64::from(t));
-        narrow(if t > 0.0 && t < 1.0 && a.dot(b) >= 0.0 {
-            slerp_short_arc(a, b, t)
-        } else {
-            slerp_unit::<W, Poly>(a, b, t)
-        })
+        narrow(slerp_far_from_unit(wa, wb, (aa, bb), f64::from(t)))
     })
+}
+
+/// The interior of [`try_slerp_f32`] for inputs whose squared lengths are not both within 2⁻²⁰
+/// of 1 (huge, tiny, or merely not normalized): inverse lengths by square roots. Out of line so
+/// that the common case stays small.
+#[cold]
+#[inline(never)]
+fn slerp_far_from_unit<W: Wide>(a: W, b: W, (aa, bb): (f64, f64), t: f64) -> W {
+    let ab = a.dot(b);
+    let (ra, rb) = (inverse_length_far(aa), inverse_length_far(bb));
+    slerp_directions(a, b, ab, (ra, rb), ab * (ra * rb) - 1.0, t)
+}
+
+/// SLERP of the directions of `a` and `b` (f64 copies of nonzero finite f32 vectors of any
+/// length; `ab = a·b`, `ra`, `rb` their inverse lengths and `y = â·b̂ − 1`) at any finite `t` — arcs up to 90° with
+/// `t ∈ (0, 1)` by the series of [`slerp_short_arc`], others with the polynomial trigonometry.
+///
+/// The long arcs take the perpendicular part of `b` from the exact minors of `a` and `b`
+/// ([`Wide::rejection`]), not from normalized copies: for nearly opposite inputs the plane of the
+/// arc is fixed by a difference far below the rounding of a normalization (an f32 normalization
+/// turned it by 0.1 rad in the case `nearly_opposite_not_quite_unit_inputs` tests), and the
+/// minors keep it to a few f64 ulps of its own size. Exactly parallel inputs (all minors zero,
+/// decided exactly) are the point `â` or, opposite, the documented half turn.
+#[inline]
+fn slerp_directions<W: Wide>(a: W, b: W, ab: f64, (ra, rb): (f64, f64), y: f64, t: f64) -> W {
+    if t > 0.0 && t < 1.0 && ab >= 0.0 {
+        // At most 90° apart: `y = â·b̂ − 1` to a few f64 ulps is all the series needs (an error δ
+        // in it moves the result by about δ, at every angle — hence the division by the lengths,
+        // which an input 2ε off unit length would otherwise turn into a 2.4e-7 error).
+        return slerp_short_arc(a, b, y, (ra, rb), t);
+    }
+    let a_hat = a.scale(ra);
+    let (p, wedge2) = a.rejection(b);
+    if wedge2 == 0.0 {
+        if ab > 0.0 {
+            return a_hat;
+        }
+        let (st, ct) = Poly::sin_cos(t * core::f64::consts::PI);
+        return a_hat.scale(ct).add(a_hat.perpendicular().scale(st));
+    }
+    // |a ∧ b| = |a||b|·sin θ and a·b = |a||b|·cos θ, both to a few ulps relative.
+    let theta = Poly::atan2(crate::math::sqrt(wedge2), ab);
+    let (st, ct) = Poly::sin_cos(t * theta);
+    a_hat
+        .scale(ct)
+        .add(p.scale(st / crate::math::sqrt(p.dot(p))))
 }
 
 /// Why a checked SLERP entry returned `None`: the first bad input in the order `t`, `a`, `b`.
@@ -212,14 +304,23 @@ pub trait SlerpAlong: Slerp {
 /// types compute in f64; arcs up to 90° with `t ∈ [0, 1]` use Eberly's series with 16 balanced
 /// factors, whose error is below the f32 rounding of the result.
 ///
-/// Inputs that are not unit length are normalized first (inputs within `4·ε` of unit squared
-/// length are used as given, so the endpoints stay exact); huge and tiny vectors normalize
-/// without overflow.
+/// # Unit inputs
+/// An input is *unit* when its squared length, computed in f64 from its components, is within
+/// `4·ε` of 1 for the f32 types (`ε = 2⁻²³`; the products are exact and the sum errs by at most
+/// 2⁻⁵², so the length itself is within 2.385e-7 of 1) or within `2·ε` for the f64 types
+/// (`ε = 2⁻⁵²`; with the f64 dot product's own error the length is within 4.5e-16 of 1). A unit
+/// input is returned as given, bit for bit, at its end: `a` at `t = 0`, `b` at `t = 1` (and `a`
+/// at every `t` when `a == b`). Any other nonzero finite input is used as a direction: the f32
+/// types never normalize in f32 — the arc is computed from the exact inputs in f64 and an end
+/// that is not unit is the input divided by its f64 length, rounded once; the f64 types
+/// normalize it first (after scaling by its largest component, so 1e300 and subnormal vectors
+/// work) and return that at its end.
 ///
 /// # Special values
 /// - `a == b`: `a` for every `t`.
-/// - `a` and `b` in opposite directions (to rounding): the arc through the deterministic
-///   perpendicular of `a` — the counter-clockwise perpendicular in 2D, glam's
+/// - `a` and `b` in opposite directions — for the f32 types exactly (decided from the exact
+///   inputs: `b = −c·a` with `c > 0`), for the f64 types to rounding — : the arc through the
+///   deterministic perpendicular of `a` — the counter-clockwise perpendicular in 2D, glam's
 ///   `any_orthonormal_vector` in 3D, `(y, −x, w, −z)` in 4D (for a quaternion `a` on the
 ///   [`QuatPath::AsGiven`] path: the full turn about the local z axis of `a`, through `a·k`).
 /// - Quaternions: `b` is negated when `a·b < 0` (then `t = 1` returns `−b` exactly).
@@ -227,11 +328,27 @@ pub trait SlerpAlong: Slerp {
 ///   ([`try_slerp`] says why instead). Never NaN, never panics.
 ///
 /// # Accuracy
-/// For unit inputs and `t` in `[0, 1]`, the angle to the exact SLERP (computed in higher
-/// precision) is within [`SLERP_F32_ANGLE_BOUND`] radians and the length within
-/// [`SLERP_F32_LENGTH_BOUND`] of 1 for the f32 types; within [`SLERP_F64_ANGLE_BOUND`] and
-/// [`SLERP_F64_LENGTH_BOUND`] for the f64 types. For quaternions the angle is the 4D angle (the
-/// rotation angle error is twice it). Tests `exact_slerp_*` in `tests/slerp.rs`.
+/// The reference is the SLERP of the inputs' *directions* at `t`, computed exactly (to 2⁻¹⁹⁰,
+/// in 200-bit fixed point from the exact input values: `barytex_testkit::precise`). For the
+/// quaternion types the angle is the 4D angle (the rotation angle error is twice it).
+///
+/// - f32 types, any nonzero finite inputs (unit or not, at every angle including exactly and
+///   nearly equal or opposite), `t ∈ [0, 1]` ends included: angle within
+///   [`SLERP_F32_ANGLE_BOUND`] (2.4e-7 rad) and `|length − 1|` within [`SLERP_F32_LENGTH_BOUND`]
+///   (3e-7). At a returned unit end the angle is 0 and the length error at most 2.385e-7 (the
+///   tolerance above); nearly opposite inputs keep the plane of their arc because its
+///   perpendicular part is taken from the exact 2×2 minors of the inputs, not from normalized
+///   copies.
+/// - f64 types, unit inputs (the tolerance above) or inputs whose f64 normalization is exact
+///   enough — i.e. not both nearly opposite *and* outside the tolerance, where normalizing
+///   moves the arc's plane by up to about `2⁻⁵²/sin(π − θ)` — and `t ∈ [0, 1]`: within
+///   [`SLERP_F64_ANGLE_BOUND`] (1e-15 rad) and [`SLERP_F64_LENGTH_BOUND`] (6e-16).
+/// - Extrapolation, `t` outside `[0, 1]`: the length bounds hold unchanged and the angle error
+///   is at most `|t|` times the angle bound (the arc's angle error is multiplied by `t`).
+///
+/// Tests `exact_slerp_*`, `inputs_at_the_edge_of_the_unit_tolerance`,
+/// `nearly_opposite_not_quite_unit_inputs` and `extrapolation_continues_the_great_circle` in
+/// `tests/slerp.rs`; measured figures and their samples in `docs/ACCURACY.md`.
 ///
 /// ```
 /// use barytex_interp::slerp;

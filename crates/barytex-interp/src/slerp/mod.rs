@@ -23,12 +23,16 @@ pub use method::QuatInterpolation;
 pub use nlerp::{NlerpCorrection, nlerp_corrected_quat, nlerp_quat};
 pub use normals::{NormalInterpolation, interpolate_normal, renormalize_spacing_error};
 
-/// Largest angle (radians) between an f32 exact SLERP result and the true SLERP of its (unit)
-/// inputs, for `t` in `[0, 1]`; measured by `tests/slerp.rs` (`exact_slerp_*`).
+/// Largest angle (radians) between an f32 exact SLERP result and the SLERP of its inputs'
+/// directions, for every nonzero finite input and `t` in `[0, 1]` (see [`slerp`]'s Accuracy);
+/// enforced by `tests/slerp.rs` (`exact_slerp_*` and the edge-case tests).
 pub const SLERP_F32_ANGLE_BOUND: f32 = 2.4e-7;
-/// Largest `|length − 1|` of an f32 exact SLERP result for unit inputs and `t` in `[0, 1]`.
+/// Largest `|length − 1|` of an f32 exact SLERP result for every nonzero finite input and `t` in
+/// `[0, 1]`, ends included (a unit input returned as given is within 2.385e-7 of unit length).
 pub const SLERP_F32_LENGTH_BOUND: f32 = 3.0e-7;
-/// Largest angle (radians) between an f64 exact SLERP result and the true SLERP of its inputs.
+/// Largest angle (radians) between an f64 exact SLERP result and the SLERP of its inputs'
+/// directions, for unit inputs and `t` in `[0, 1]` (see [`slerp`]'s Accuracy).
 pub const SLERP_F64_ANGLE_BOUND: f64 = 1.0e-15;
-/// Largest `|length − 1|` of an f64 exact SLERP result for unit inputs and `t` in `[0, 1]`.
+/// Largest `|length − 1|` of an f64 exact SLERP result for unit inputs and `t` in `[0, 1]`, ends
+/// included (a unit input returned as given is within 4.5e-16 of unit length).
 pub const SLERP_F64_LENGTH_BOUND: f64 = 6.0e-16;

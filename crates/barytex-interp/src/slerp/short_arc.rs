@@ -55,9 +55,17 @@ fn weight(s: f64, y: f64) -> f64 {
     s * ((1.0 + s0) + q0 * tail)
 }
 
-/// SLERP of `a` and `b` (unit length to a few f32 ulps, `a·b ≥ 0`) at `t ∈ [0, 1]`.
+/// SLERP of the directions `a·ra` and `b·rb` (`ra`, `rb` the inverse lengths of `a`, `b`;
+/// `y = (a·ra)·(b·rb) − 1 ∈ [−1, 0]`, at most 90° apart) at `t ∈ [0, 1]`. The inverse lengths are
+/// folded into the two weights, so the inputs are never scaled as vectors.
 #[inline]
-pub(crate) fn slerp_short_arc<W: Ops<Scalar = f64>>(a: W, b: W, t: f64) -> W {
-    let y = a.dot(b) - 1.0;
-    a.scale(weight(1.0 - t, y)).add(b.scale(weight(t, y)))
+pub(crate) fn slerp_short_arc<W: Ops<Scalar = f64>>(
+    a: W,
+    b: W,
+    y: f64,
+    (ra, rb): (f64, f64),
+    t: f64,
+) -> W {
+    a.scale(weight(1.0 - t, y) * ra)
+        .add(b.scale(weight(t, y) * rb))
 }

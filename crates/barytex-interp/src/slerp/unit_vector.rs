@@ -109,6 +109,102 @@ ops!(DVec2, f64, |v| v.perp());
 ops!(DVec3, f64, |v| v.any_orthonormal_vector());
 ops!(DVec4, f64, |v| DVec4::new(v.y, -v.x, v.w, -v.z));
 
+/// The f64 vectors that carry an f32 SLERP: [`DVec2`], [`DVec3`], [`DVec4`].
+pub(crate) trait Wide: Ops<Scalar = f64> {
+    /// The part of `b` perpendicular to `self`, scaled by `self·self`: `(a·a)·b − (a·b)·a`, and
+    /// `|a ∧ b|² = Σᵢ<ⱼ (aⱼbᵢ − aᵢbⱼ)²`, both from the 2×2 minors `aⱼbᵢ − aᵢbⱼ`.
+    ///
+    /// For f64 copies of f32 vectors each product of two components is exact (48 significant
+    /// bits), so each minor is rounded once, correctly, and is zero exactly when the f32 vectors
+    /// are parallel: the perpendicular part is accurate to a few ulps relative at every angle and
+    /// every ratio of lengths, with no cancellation against the parallel part.
+    fn rejection(self, b: Self) -> (Self, f64);
+}
+
+/// `(a·a)·b − (a·b)·a` and `|a ∧ b|²` from the minors of `a` and `b` (see [`Wide::rejection`]).
+#[inline]
+fn rejection_minors<const N: usize>(a: [f64; N], b: [f64; N]) -> ([f64; N], f64) {
+    // m[i][j] = a[j]·b[i] − a[i]·b[j]; antisymmetric, so each minor is computed once.
+    let mut m = [[0.0; N]; N];
+    let mut wedge2 = 0.0;
+    for i in 0..N {
+        for j in i + 1..N {
+            let minor = a[j] * b[i] - a[i] * b[j];
+            m[i][j] = minor;
+            m[j][i] = -minor;
+            wedge2 += minor * minor;
+        }
+    }
+    // pᵢ = Σⱼ aⱼ·m[i][j] = (a·a)·bᵢ − (a·b)·aᵢ. Its terms cannot cancel badly: Σⱼ|aⱼ·m[i][j]| is
+    // at most |a|·|m[i]|, while |p| = |a|·|a ∧ b|.
+    let p = core::array::from_fn(|i| (0..N).map(|j| a[j] * m[i][j]).sum());
+    (p, wedge2)
+}
+
+macro_rules! wide {
+    ($($v:ty),*) => {$(
+        impl Wide for $v {
+            #[inline]
+            fn rejection(self, b: Self) -> (Self, f64) {
+                let (p, wedge2) = rejection_minors(self.to_array(), b.to_array());
+                (Self::from_array(p), wedge2)
+            }
+        }
+    )*};
+}
+
+wide!(DVec2, DVec3, DVec4);
+
+/// `1/√len2` for a squared length `len2 > 0`, to a few ulps: near 1 (the common case, an input
+/// that is already unit to rounding) by the first terms of `(1 + δ)^(−1/2) = 1 − δ/2 + 3δ²/8 − …`,
+/// whose error `5|δ|³/16 ≤ 2⁻⁶¹` for `|δ| ≤ 2⁻²⁰` is far below an f64 ulp, without a square root
+/// or a division.
+#[inline]
+pub(crate) fn inverse_length(len2: f64) -> f64 {
+    if (len2 - 1.0).abs() <= NEAR_UNIT {
+        inverse_length_near(len2)
+    } else {
+        inverse_length_far(len2)
+    }
+}
+
+/// [`inverse_length`] far from 1. Out of line and cold, so that the compiler keeps the branch
+/// instead of evaluating the square root and division on every call.
+#[cold]
+#[inline(never)]
+pub(crate) fn inverse_length_far(len2: f64) -> f64 {
+    1.0 / math::sqrt(len2)
+}
+
+/// `â·b̂ − 1 = (a·b)/√((a·a)(b·b)) − 1` from the three dot products, to a few f64 ulps of 1,
+/// for squared lengths `aa`, `bb` within [`NEAR_UNIT`] of 1 (see [`is_near_unit`]).
+///
+/// By the series of [`inverse_length`] in `d = (a·a)(b·b) − 1` (`|d| ≤ 2⁻¹⁹`, so the neglected
+/// `5|d|³/16` is below 2⁻⁵⁸), arranged as `((a·b − 1) − (a·b/2)·d) + (3·a·b/8)·d²` so that
+/// `a·b − 1` (exact, by Sterbenz, for `a·b ∈ [½, 2]`) and the correction run side by side.
+#[inline]
+pub(crate) fn cosine_minus_one(ab: f64, aa: f64, bb: f64) -> f64 {
+    let d = aa * bb - 1.0;
+    ((ab - 1.0) - (0.5 * ab) * d) + (0.375 * ab) * (d * d)
+}
+
+/// [`inverse_length`] for `len2` within [`NEAR_UNIT`] of 1: the series alone, no branch.
+#[inline]
+pub(crate) fn inverse_length_near(len2: f64) -> f64 {
+    let d = len2 - 1.0;
+    1.0 - d * (0.5 - 0.375 * d)
+}
+
+/// Whether both squared lengths are within [`NEAR_UNIT`] of 1, where [`inverse_length_near`]
+/// and [`cosine_minus_one`] apply.
+#[inline]
+pub(crate) fn is_near_unit(aa: f64, bb: f64) -> bool {
+    (aa - 1.0).abs() <= NEAR_UNIT && (bb - 1.0).abs() <= NEAR_UNIT
+}
+
+/// `|len² − 1|` up to which [`inverse_length`] uses its series (`2⁻²⁰`).
+const NEAR_UNIT: f64 = 1.0 / 1_048_576.0;
+
 /// `v` scaled to unit length, or `None` when `v` is zero or not finite.
 ///
 /// A vector whose squared length is within `4·ε` of 1 is returned unchanged, so unit inputs keep
@@ -117,8 +213,14 @@ ops!(DVec4, f64, |v| DVec4::new(v.y, -v.x, v.w, -v.z));
 /// underflow.
 #[inline]
 pub(crate) fn unit<V: Ops>(v: V) -> Option<V> {
+    unit_within(v, V::Scalar::UNIT_TOLERANCE)
+}
+
+/// [`unit`] with the squared-length tolerance `tolerance` instead of `4·ε`.
+#[inline]
+pub(crate) fn unit_within<V: Ops>(v: V, tolerance: V::Scalar) -> Option<V> {
     let len2 = v.dot(v);
-    if len2.sub(V::Scalar::ONE).abs() <= V::Scalar::UNIT_TOLERANCE {
+    if len2.sub(V::Scalar::ONE).abs() <= tolerance {
         return Some(v);
     }
     unit_slow(v)

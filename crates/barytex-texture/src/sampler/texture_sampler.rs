@@ -44,11 +44,14 @@ use crate::{MipChain, Texel, Texture2d};
 /// weight rounded once to f32 (see [`crate::addressing`]); every `sample_level` result lies in the
 /// set the specification allows at its minimum precisions (dEQP-style check,
 /// `tests/sampling.rs::sample_level_is_inside_the_allowed_set`). Bilinear blends in the form
-/// `a + (b − a)·t`: an exact texel centre returns its texel exactly; a constant texture returns
-/// the constant within 2 ε (un-premultiplying) under nearest, bilinear and trilinear and within
-/// 16 ε under cubic, anisotropic and EWA; nearest, bilinear and trilinear results lie within the
-/// texels' range widened by 4 ε, B-spline, anisotropic and EWA results within it widened by 16 ε
-/// (they sum and normalise up to 16 weighted terms). Tested in `tests/sampling.rs` and by the
+/// `a + (b − a)·t`: an exact texel centre returns its texel exactly; a constant texture `c`
+/// returns the constant within `2·ε·|c|` (un-premultiplying) under nearest, bilinear and
+/// trilinear and within `16·ε·|c|` under cubic, anisotropic and EWA; nearest, bilinear and
+/// trilinear results lie within the texels' range widened by `4·ε·m`, B-spline, anisotropic and
+/// EWA results within it widened by `16·ε·m` (they sum and normalise up to 16 weighted terms),
+/// `m` the largest texel magnitude — relative, not absolute: float texels near 2²⁰ go beyond an
+/// absolute 4 ε by up to 0.125. Tested in `tests/sampling.rs` (8-bit texels, `m ≤ 1`),
+/// `tests/value_scale.rs` (float texels scaled by 2⁻³⁰ … 2³⁰, random footprints) and by the
 /// `sampling` fuzz target.
 #[derive(Clone, Debug)]
 pub struct TextureSampler<T> {
