@@ -170,3 +170,8 @@ pub mod methods {
     pub use crate::orient::methods::{orient2d_dop_f32, orient2d_naive_f32};
     pub use crate::orient3d::methods::orient3d_naive_f64;
 }
+
+/// The README's examples, compiled and run as doc tests (`cargo test --doc`).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

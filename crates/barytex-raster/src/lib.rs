@@ -18,7 +18,7 @@
 //! front by default.
 //!
 //! Dependencies: barytex-interp, glam and rayon. The optional `texture` feature adds
-//! barytex-texture (with its image decoders) for `Framebuffer::to_rgba32f` and
+//! barytex-texture (without its image decoders) for `Framebuffer::to_rgba32f` and
 //! `Framebuffer::to_srgba8`, which return its `Texture2d`; [`Framebuffer::to_linear_rgba`] reads
 //! the resolved pixels without it.
 //!
@@ -67,3 +67,8 @@ pub use state::{
 };
 pub use supersample::render_supersampled;
 pub use target::{Framebuffer, TILE};
+
+/// The README's examples, compiled and run as doc tests (`cargo test --doc`).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

@@ -116,3 +116,8 @@ pub use speedups::{
     precomputed_vertex_colours, quadratic_interpolate,
 };
 pub use texturing::{SurfaceShader, SurfaceVarying, TextureUse};
+
+/// The README's examples, compiled and run as doc tests (`cargo test --doc`).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

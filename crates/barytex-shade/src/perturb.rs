@@ -104,12 +104,14 @@ impl<F: Fn(Vec2) -> f32> HeightField for F {
 }
 
 /// MikkTSpace tangents (`xyz` unit, `w = ±1` glTF handedness) for `mesh`'s positions, normals
-/// and uvs, via the `mikktspace` crate — what glTF asks for when a normal-mapped mesh has no
+/// and uvs, via the `bevy_mikktspace` crate (a safe port of Mikkelsen's reference implementation,
+/// bit-identical to it on x86) — what glTF asks for when a normal-mapped mesh has no
 /// tangents. The uvs are handed over as `(u, 1 − v)` so that `w·(n × t)` points up in the image
 /// (decreasing `v`), the convention of glTF and of barytex-uv's meshes.
 ///
 /// Returns `None` when the mesh has no triangles, mismatched attribute counts, an index out of
-/// range, or when MikkTSpace fails.
+/// range, or when MikkTSpace fails. A vertex MikkTSpace finds no tangent for (only degenerate
+/// faces around it) gets the reference implementation's default, `(1, 0, 0, −1)`.
 ///
 /// ```
 /// let sphere = barytex_uv::mesh::sphere(16, 8).expect("valid");
@@ -135,7 +137,7 @@ pub fn generate_tangents(mesh: &TriMesh) -> Option<Vec<Vec4>> {
             self.mesh.indices[face][vert] as usize
         }
     }
-    impl mikktspace::Geometry for Geometry<'_> {
+    impl bevy_mikktspace::Geometry for Geometry<'_> {
         fn num_faces(&self) -> usize {
             self.mesh.indices.len()
         }
@@ -152,8 +154,14 @@ pub fn generate_tangents(mesh: &TriMesh) -> Option<Vec<Vec4>> {
             let uv = self.mesh.uvs[self.index(face, vert)];
             [uv.x, 1.0 - uv.y]
         }
-        fn set_tangent_encoded(&mut self, tangent: [f32; 4], face: usize, vert: usize) {
+        fn set_tangent(
+            &mut self,
+            tangent_space: Option<bevy_mikktspace::TangentSpace>,
+            face: usize,
+            vert: usize,
+        ) {
             let i = self.index(face, vert);
+            let tangent = tangent_space.unwrap_or_default().tangent_encoded();
             self.tangents[i] = Vec4::from_array(tangent);
         }
     }
@@ -161,5 +169,7 @@ pub fn generate_tangents(mesh: &TriMesh) -> Option<Vec<Vec4>> {
         mesh,
         tangents: vec![Vec4::ZERO; n],
     };
-    mikktspace::generate_tangents(&mut geometry).then_some(geometry.tangents)
+    bevy_mikktspace::generate_tangents(&mut geometry)
+        .ok()
+        .map(|()| geometry.tangents)
 }

@@ -80,3 +80,8 @@ pub use sampler::{Sampler, SamplerDescriptor, TextureSampler};
 pub use texel::{R8, R32f, Rg8, Rgba8, Rgba16f, Rgba32f, Srgba8, Texel, TextureFormat};
 pub use texture2d::Texture2d;
 pub use volume::{Texture2dArray, Texture3d};
+
+/// The README's examples, compiled and run as doc tests (`cargo test --doc`).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;

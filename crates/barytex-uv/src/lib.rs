@@ -68,3 +68,8 @@ pub use distortion::{MeshDistortion, TriangleDistortion};
 pub use error::UvError;
 pub use mapping::{PositionMapping, SurfacePoint, UvJacobian, UvMapping, UvSample};
 pub use mesh::{MeshDefect, TriMesh};
+
+/// The README's examples, compiled and run as doc tests (`cargo test --doc`).
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;
