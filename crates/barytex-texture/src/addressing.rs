@@ -124,13 +124,8 @@ pub fn wrap(i: i64, size: u32, mode: AddressMode) -> Option<u32> {
             let mirror = if t >= 0 { t } else { -(1 + t) };
             (size - 1) - mirror
         }
-        AddressMode::ClampToBorder => {
-            if (0..size).contains(&i) {
-                i
-            } else {
-                return None;
-            }
-        }
+        // Inside indices returned above: this one is outside, so it reads the border.
+        AddressMode::ClampToBorder => return None,
     };
     // In [0, size) ⊂ u32.
     u32::try_from(wrapped).ok()
