@@ -15,28 +15,11 @@ pub(crate) fn short_path(a: Vec4, b: Vec4) -> (Vec4, f32) {
     if d < 0.0 { (-b, -d) } else { (b, d) }
 }
 
-/// [`short_path`] without a branch (the sign of `a·b` is data, unpredictable in general): `b`
-/// or `−b` by a lane select, and `|a·b|`.
-#[inline]
-fn short_path_select(a: Vec4, b: Vec4) -> (Vec4, f32) {
-    // The dot product in every lane: no shuffle to spread it for the select.
-    let d = a.dot_into_vec(b);
-    (Vec4::select(d.cmplt(Vec4::ZERO), -b, b), d.x.abs())
-}
-
 /// nlerp of `a` and `b` (the latter already on the short path) at parameter `t`; zero for
 /// non-finite input.
-///
-/// Divides by the length rather than multiplying by its reciprocal: one rounding instead of
-/// two, and one dependent operation fewer (the division is as fast as the reciprocal it
-/// replaces).
 #[inline]
 fn normalized_lerp(a: Vec4, b: Vec4, t: f32) -> Quat {
-    let q = a + (b - a) * t;
-    // The length in every lane, and a lane select instead of a branch on it.
-    let length = q.dot_into_vec(q).sqrt();
-    let usable = length.cmpgt(Vec4::ZERO) & length.cmplt(Vec4::INFINITY);
-    Quat::from_vec4(Vec4::select(usable, q / length, Vec4::ZERO))
+    Quat::from_vec4((a + (b - a) * t).normalize_or_zero())
 }
 
 /// Normalized linear interpolation of unit quaternions on the short path: the fastest member of
@@ -63,7 +46,7 @@ fn normalized_lerp(a: Vec4, b: Vec4, t: f32) -> Quat {
 #[inline]
 pub fn nlerp_quat(a: Quat, b: Quat, t: f32) -> Quat {
     let a = Vec4::from(a);
-    let (b, _) = short_path_select(a, Vec4::from(b));
+    let (b, _) = short_path(a, Vec4::from(b));
     normalized_lerp(a, b, t)
 }
 
@@ -169,6 +152,6 @@ pub fn nlerp_corrected_quat(a: Quat, b: Quat, t: f32, correction: NlerpCorrectio
     let a = Vec4::from(a);
     // Independent of the inputs' dot product: computed while it is.
     let coefficients = corrected_t_coefficients(t, correction);
-    let (b, d) = short_path_select(a, Vec4::from(b));
+    let (b, d) = short_path(a, Vec4::from(b));
     normalized_lerp(a, b, cubic_in_d(coefficients, d))
 }

@@ -95,7 +95,8 @@ fn coefficients4(t: Vec4, correction: Option<NlerpCorrection>) -> [Vec4; 4] {
     [k(0) + t, k(1), k(2), k(3)]
 }
 
-/// The group of four: short path, corrected parameter, lerp, division by the length.
+/// The group of four: short path (a lane select where the per-call function branches),
+/// corrected parameter, lerp, normalization.
 #[inline]
 fn nlerp4(a: Quat4, b: Quat4, t: Vec4, correction: Option<NlerpCorrection>) -> Quat4 {
     let [c0, c1, c2, c3] = coefficients4(t, correction);
@@ -105,9 +106,11 @@ fn nlerp4(a: Quat4, b: Quat4, t: Vec4, correction: Option<NlerpCorrection>) -> Q
     let d = d.abs();
     let t = (c0 + c1 * d) + (d * d) * (c2 + c3 * d);
     let q = a.zip(b, |a, b| a + (b - a) * t);
-    let length = q.dot(q).sqrt();
-    let usable = length.cmpgt(Vec4::ZERO) & length.cmplt(Vec4::INFINITY);
-    q.map(|v| Vec4::select(usable, v / length, Vec4::ZERO))
+    // glam's `normalize_or_zero`, lane by lane: the reciprocal of the length, used when finite
+    // and positive.
+    let reciprocal = Vec4::ONE / q.dot(q).sqrt();
+    let usable = reciprocal.cmpgt(Vec4::ZERO) & reciprocal.cmplt(Vec4::INFINITY);
+    q.map(|v| Vec4::select(usable, v * reciprocal, Vec4::ZERO))
 }
 
 /// Checks that every slice has `out`'s length.
