@@ -9,7 +9,10 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use barytex_interp::{NormalInterpolation, QuatInterpolation, interpolate_normal, slerp};
+use barytex_interp::{
+    NlerpCorrection, NormalInterpolation, QuatInterpolation, interpolate_normal,
+    nlerp_corrected_quats, nlerp_quats, slerp,
+};
 use barytex_testkit::seeded::XorShift;
 use barytex_testkit::sphere;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
@@ -48,6 +51,36 @@ fn bench_quat_slerp(c: &mut Criterion) {
             });
         });
     }
+    // The slice functions, on the same pairs split into three slices (setup, untimed), writing
+    // into a preallocated output like the loops above write into black_box.
+    let (slice_a, slice_b, slice_t): (Vec<Quat>, Vec<Quat>, Vec<f32>) =
+        pairs.iter().map(|&(a, b, t)| (a, b, t)).collect();
+    let mut slice_out = vec![Quat::IDENTITY; BATCH];
+    group.bench_function("barytex_nlerp_slices", |bench| {
+        bench.iter(|| {
+            nlerp_quats(
+                black_box(&slice_a),
+                black_box(&slice_b),
+                black_box(&slice_t),
+                &mut slice_out,
+            )
+            .expect("same lengths");
+            black_box(&slice_out);
+        });
+    });
+    group.bench_function("barytex_nlerp-corrected_slices", |bench| {
+        bench.iter(|| {
+            nlerp_corrected_quats(
+                black_box(&slice_a),
+                black_box(&slice_b),
+                black_box(&slice_t),
+                NlerpCorrection::Precise,
+                &mut slice_out,
+            )
+            .expect("same lengths");
+            black_box(&slice_out);
+        });
+    });
     group.bench_function("barytex_slerp_direct_call", |bench| {
         bench.iter(|| {
             for &(a, b, t) in black_box(&pairs[..]) {

@@ -44,6 +44,15 @@ pub enum InterpError {
         /// The sum, computed in f64.
         sum: f64,
     },
+    /// Slices that must have one entry each per element have different lengths.
+    LengthMismatch {
+        /// Which slice.
+        what: &'static str,
+        /// Its length.
+        len: usize,
+        /// The length of the output slice, which the others must have.
+        expected: usize,
+    },
     /// A convex combination was given a negative weight.
     NegativeWeight {
         /// Position of the weight.
@@ -69,6 +78,13 @@ impl fmt::Display for InterpError {
             Self::DegenerateSegment => f.write_str("segment endpoints coincide"),
             Self::WeightsDoNotSumToOne { sum } => {
                 write!(f, "weights sum to {sum}, not 1")
+            }
+            Self::LengthMismatch {
+                what,
+                len,
+                expected,
+            } => {
+                write!(f, "{what} has {len} entries, the output {expected}")
             }
             Self::NegativeWeight { index, weight } => {
                 write!(

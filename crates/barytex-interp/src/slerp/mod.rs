@@ -4,7 +4,7 @@
 //! | need | items |
 //! |---|---|
 //! | exact, total, f32 and f64 | [`slerp`] and [`try_slerp`] for every [`Slerp`] type (`Vec2`, `Vec3`, `Vec3A`, `Vec4`, `Quat` and their `D` twins); [`slerp_along`] and [`try_slerp_along`] for quaternions on a chosen [`QuatPath`] |
-//! | fast quaternion approximations | [`nlerp_quat`], [`nlerp_corrected_quat`] with [`NlerpCorrection`], [`slerp_eberly_quat`] |
+//! | fast quaternion approximations | [`nlerp_quat`], [`nlerp_corrected_quat`] with [`NlerpCorrection`], [`slerp_eberly_quat`]; over slices, four at a time: [`nlerp_quats`], [`nlerp_corrected_quats`] |
 //! | pick by speed against error | [`QuatInterpolation`] with its `angle_bound` / `length_bound` |
 //! | normals | [`interpolate_normal`], [`NormalInterpolation`], [`renormalize_spacing_error`] |
 
@@ -12,6 +12,7 @@ mod eberly;
 mod exact;
 mod method;
 mod nlerp;
+mod nlerp_batch;
 mod normals;
 mod short_arc;
 mod trig;
@@ -21,6 +22,7 @@ pub use eberly::{EBERLY_MAX_TERMS, slerp_eberly_quat};
 pub use exact::{QuatPath, Slerp, SlerpAlong, slerp, slerp_along, try_slerp, try_slerp_along};
 pub use method::QuatInterpolation;
 pub use nlerp::{NlerpCorrection, nlerp_corrected_quat, nlerp_quat};
+pub use nlerp_batch::{nlerp_corrected_quats, nlerp_quats};
 pub use normals::{NormalInterpolation, interpolate_normal, renormalize_spacing_error};
 
 /// Largest angle (radians) between an f32 exact SLERP result and the SLERP of its inputs'

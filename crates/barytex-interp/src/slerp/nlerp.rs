@@ -75,19 +75,49 @@ pub enum NlerpCorrection {
     Precise,
 }
 
-/// Kapoulkine's reparametrized `t` for nlerp at `d = a·b ∈ [0, 1]`.
+/// Kapoulkine's reparametrized `t` as a cubic in `d = a·b ∈ [0, 1]` whose coefficients depend
+/// on `t` only: `t' = c₀ + c₁·d + c₂·d² + c₃·d³`, the coefficients in `x`, `y`, `z`, `w`.
+///
+/// `t' = t + s·k(t, d)` with `s = t(t − ½)(t − 1)`, and `k` is a polynomial in `d` (quadratic for
+/// [`NlerpCorrection::Fast`]; `A(d)·(t − ½)² + B(d)` with `A` cubic and `B` quadratic for
+/// [`NlerpCorrection::Precise`]), so `s·k` regroups by powers of `d`: `s·(A·(t − ½)² + B) + t`
+/// with `A` and `B` the fits' coefficient vectors, four lanes at once. The coefficients need only
+/// `t`, so they are computed while `a·b` is; what remains after the dot product is Estrin's
+/// two-level evaluation ([`cubic_in_d`]), three dependent operations instead of the eight of
+/// Horner's rule on `k` followed by `t + s·k`. At `t = 0` and `t = 1`, `s = 0` and the cubic is
+/// exactly `t`.
 #[inline]
-pub(crate) fn corrected_t(t: f32, d: f32, correction: NlerpCorrection) -> f32 {
-    let k = match correction {
-        NlerpCorrection::Fast => 0.931_872 + d * (-1.256_54 + d * 0.331_442),
-        NlerpCorrection::Precise => {
-            let a = 1.0904 + d * (-3.2452 + d * (3.556_45 - d * 1.435_19));
-            let b = 0.848_013 + d * (-1.060_21 + d * 0.215_638);
-            let c = t - 0.5;
-            a * c * c + b
-        }
-    };
-    t + t * (t - 0.5) * (t - 1.0) * k
+pub(crate) fn corrected_t_coefficients(t: f32, correction: NlerpCorrection) -> Vec4 {
+    let c = t - 0.5;
+    let s = t * c * (t - 1.0);
+    let t_first = Vec4::new(t, 0.0, 0.0, 0.0);
+    match correction {
+        NlerpCorrection::Fast => FAST_FIT * s + t_first,
+        NlerpCorrection::Precise => (PRECISE_FIT_A * (c * c) + PRECISE_FIT_B) * s + t_first,
+    }
+}
+
+/// Kapoulkine's quadratic `k(d)`, lowest power first.
+const FAST_FIT: Vec4 = Vec4::new(0.931_872, -1.256_54, 0.331_442, 0.0);
+/// `A(d)` of Kapoulkine's `t`-dependent fit, lowest power first.
+const PRECISE_FIT_A: Vec4 = Vec4::new(1.0904, -3.2452, 3.556_45, -1.435_19);
+/// `B(d)` of Kapoulkine's `t`-dependent fit, lowest power first.
+const PRECISE_FIT_B: Vec4 = Vec4::new(0.848_013, -1.060_21, 0.215_638, 0.0);
+
+/// The fit's `A` and `B` coefficient vectors, lowest power of `d` first (`A = 0` for the fast
+/// fit, whose `k` does not depend on `t`).
+#[inline]
+pub(crate) fn fit(correction: NlerpCorrection) -> ([f32; 4], [f32; 4]) {
+    match correction {
+        NlerpCorrection::Fast => ([0.0; 4], FAST_FIT.to_array()),
+        NlerpCorrection::Precise => (PRECISE_FIT_A.to_array(), PRECISE_FIT_B.to_array()),
+    }
+}
+
+/// `c₀ + c₁·d + c₂·d² + c₃·d³` by Estrin's scheme: `(c₀ + c₁·d) + d²·(c₂ + c₃·d)`.
+#[inline]
+pub(crate) fn cubic_in_d(c: Vec4, d: f32) -> f32 {
+    (c.x + c.y * d) + (d * d) * (c.z + c.w * d)
 }
 
 /// nlerp with Kapoulkine's corrected parameter: nearly constant speed for a few more
@@ -120,6 +150,8 @@ pub(crate) fn corrected_t(t: f32, d: f32, correction: NlerpCorrection) -> f32 {
 #[inline]
 pub fn nlerp_corrected_quat(a: Quat, b: Quat, t: f32, correction: NlerpCorrection) -> Quat {
     let a = Vec4::from(a);
+    // Independent of the inputs' dot product: computed while it is.
+    let coefficients = corrected_t_coefficients(t, correction);
     let (b, d) = short_path(a, Vec4::from(b));
-    normalized_lerp(a, b, corrected_t(t, d, correction))
+    normalized_lerp(a, b, cubic_in_d(coefficients, d))
 }
