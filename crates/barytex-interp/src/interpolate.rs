@@ -12,7 +12,7 @@ use crate::lerp::{lerp, lerp_f64};
 /// `f64` values are scaled by the weight converted to `f64` exactly.
 ///
 /// # Laws
-/// Checked for every implementation by one generic test (`tests/interpolate_laws.rs`):
+/// Checked for every implementation by one generic test (`tests/tests/interp/interpolate_laws.rs`):
 ///
 /// 1. **Exact endpoints**: `a.lerp(b, 0.0) == a` and `a.lerp(b, 1.0) == b`.
 /// 2. **Consistency**: `a.lerp(a, t) == a` for every finite `t`.

@@ -53,7 +53,7 @@ exact_lerp!(
     /// `2⁻¹⁴⁹` of the subnormals, by at most half of it, and sums of subnormals are exact — so
     /// `lerp(1e-45, 3e-45, 0.5)` is 7e-46 off, far above the relative term alone (tests
     /// `lerp_accuracy_bound`, `lerp_accuracy_bound_with_subnormals` and
-    /// `underflow_needs_the_absolute_term` in `tests/lerp.rs`).
+    /// `underflow_needs_the_absolute_term` in `tests/tests/interp/lerp.rs`).
     ///
     /// # Special values
     /// A NaN input gives NaN, except that `t == 1` returns `b` as given. An infinite endpoint
@@ -77,7 +77,7 @@ exact_lerp!(
     /// For finite inputs and `t` in `[0, 1]`:
     /// `|lerp_f64(a, b, t) − exact| ≤ 2·ε·max(|a|, |b|) + 2⁻¹⁰⁷⁴` with `ε = f64::EPSILON`, the
     /// absolute term for underflow as in [`lerp`] (tests `lerp_f64_accuracy_bound` and
-    /// `lerp_f64_accuracy_bound_with_subnormals` in `tests/lerp.rs`).
+    /// `lerp_f64_accuracy_bound_with_subnormals` in `tests/tests/interp/lerp.rs`).
     lerp_f64,
     f64
 );

@@ -13,7 +13,7 @@
 //! A mesh's figures include its discretization: flat triangles are not the smooth surface. The
 //! unit sphere at `2n × n` measures an excess area distortion of about `1.6/n` with the
 //! equal-area uvs (exactly 1 in the limit), and the equirectangular one approaches its closed
-//! form `1.5166` from below by about as much (`tests/distortion.rs`):
+//! form `1.5166` from below by about as much (`crates/barytex-uv/tests/distortion.rs`):
 //!
 //! | sphere | equirectangular area mean / max | equal-area area mean / max | angle mean (equirect. / equal-area) |
 //! |---|---|---|---|
@@ -44,7 +44,7 @@ use crate::mesh::TriMesh;
 ///
 /// # Accuracy
 /// Both values within `1e-13·σ1` of the exact singular values (a few f64 roundings);
-/// `tests/distortion.rs::singular_values_match_their_construction` checks it on matrices built
+/// `crates/barytex-uv/tests/distortion.rs::singular_values_match_their_construction` checks it on matrices built
 /// from known rotations and scales.
 ///
 /// ```
@@ -111,7 +111,7 @@ impl TriangleDistortion {
 /// with angles ≥ 20° placed within 10 edge lengths of the origin, with uvs an affine map
 /// (`σ1 ≤ 10`, `σ2 ≥ σ1/20`) of it plus `(½, ½)`, both rounded to f32, `σ1` and `σ2` are within
 /// `1e-5·σ1` of that map's singular values (measured: `1.35e-6·σ1` over 2 million random
-/// cases; `tests/distortion.rs::triangle_singular_values_of_a_known_affine_map`).
+/// cases; `crates/barytex-uv/tests/distortion.rs::triangle_singular_values_of_a_known_affine_map`).
 ///
 /// ```
 /// use barytex_uv::distortion::triangle_distortion;

@@ -77,7 +77,7 @@ impl<const N: usize> Table<N> {
 /// # Accuracy
 /// For `t` in `[0, 1]`: 4D angle to the exact SLERP and `|length − 1|` within the bounds of
 /// [`QuatInterpolation::Eberly`](super::QuatInterpolation::Eberly) with `N` terms (test
-/// `approximation_bounds` in `tests/slerp.rs`); e.g. 8 terms: see
+/// `approximation_bounds` in `tests/tests/interp/slerp.rs`); e.g. 8 terms: see
 /// [`QuatInterpolation::angle_bound`](super::QuatInterpolation::angle_bound).
 ///
 /// ```

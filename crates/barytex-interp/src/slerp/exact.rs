@@ -348,7 +348,7 @@ pub trait SlerpAlong: Slerp {
 ///
 /// Tests `exact_slerp_*`, `inputs_at_the_edge_of_the_unit_tolerance`,
 /// `nearly_opposite_not_quite_unit_inputs` and `extrapolation_continues_the_great_circle` in
-/// `tests/slerp.rs`; measured figures and their samples in `docs/ACCURACY.md`.
+/// `tests/tests/interp/slerp.rs`; measured figures and their samples in `docs/ACCURACY.md`.
 ///
 /// ```
 /// use barytex_interp::slerp;

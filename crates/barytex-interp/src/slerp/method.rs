@@ -11,7 +11,7 @@ use super::nlerp::{NlerpCorrection, nlerp_corrected_quat, nlerp_quat};
 ///
 /// Every variant states the largest 4D angle to the exact SLERP ([`angle_bound`]) and the largest
 /// `|length − 1|` ([`length_bound`]) it produces for unit inputs and `t` in `[0, 1]`; the test
-/// `approximation_bounds` in `tests/slerp.rs` measures both over a dense grid of angles and
+/// `approximation_bounds` in `tests/tests/interp/slerp.rs` measures both over a dense grid of angles and
 /// parameters and fails if either is exceeded, or if a bound is more than twice the measured
 /// error (so the bounds stay honest in both directions).
 ///
@@ -46,7 +46,7 @@ pub enum QuatInterpolation {
     },
 }
 
-/// Maxima measured by `approximation_bounds` in tests/slerp.rs (600 quaternion pairs with 4D
+/// Maxima measured by `approximation_bounds` in tests/tests/interp/slerp.rs (600 quaternion pairs with 4D
 /// angles over `[0, π/2]`, 41 parameters each), rounded up: 4D angle, then `|length − 1|`; index
 /// `terms − 1`.
 const EBERLY_BOUNDS: [(f32, f32); 16] = [

@@ -27,7 +27,7 @@ pub use normals::{NormalInterpolation, interpolate_normal, renormalize_spacing_e
 
 /// Largest angle (radians) between an f32 exact SLERP result and the SLERP of its inputs'
 /// directions, for every nonzero finite input and `t` in `[0, 1]` (see [`slerp`]'s Accuracy);
-/// enforced by `tests/slerp.rs` (`exact_slerp_*` and the edge-case tests).
+/// enforced by `tests/tests/interp/slerp.rs` (`exact_slerp_*` and the edge-case tests).
 pub const SLERP_F32_ANGLE_BOUND: f32 = 2.4e-7;
 /// Largest `|length − 1|` of an f32 exact SLERP result for every nonzero finite input and `t` in
 /// `[0, 1]`, ends included (a unit input returned as given is within 2.385e-7 of unit length).

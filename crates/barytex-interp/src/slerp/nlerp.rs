@@ -33,7 +33,7 @@ fn normalized_lerp(a: Vec4, b: Vec4, t: f32) -> Quat {
 /// # Accuracy
 /// 4D angle to the exact SLERP within [`QuatInterpolation::Nlerp`](super::QuatInterpolation::Nlerp)'s
 /// [`angle_bound`](super::QuatInterpolation::angle_bound) (7.1e-2 rad: the speed error at
-/// θ = 90°, `t = ¼`), length within 2.4e-7 of 1 (test `approximation_bounds` in `tests/slerp.rs`).
+/// θ = 90°, `t = ¼`), length within 2.4e-7 of 1 (test `approximation_bounds` in `tests/tests/interp/slerp.rs`).
 ///
 /// ```
 /// use barytex_interp::nlerp_quat;
@@ -135,7 +135,7 @@ pub(crate) fn cubic_in_d(c: Vec4, d: f32) -> f32 {
 /// [`QuatInterpolation::NlerpCorrectedFast`](super::QuatInterpolation::NlerpCorrectedFast) or
 /// [`QuatInterpolation::NlerpCorrected`](super::QuatInterpolation::NlerpCorrected) (5.4e-3 rad
 /// fast, 5.0e-4 precise) for `t` in `[0, 1]`, length within 2.4e-7 of 1 (test
-/// `approximation_bounds` in `tests/slerp.rs`).
+/// `approximation_bounds` in `tests/tests/interp/slerp.rs`).
 ///
 /// ```
 /// use barytex_interp::{nlerp_corrected_quat, slerp, NlerpCorrection};

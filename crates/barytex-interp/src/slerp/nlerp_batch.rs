@@ -10,7 +10,7 @@
 //! The arithmetic is the per-call function's, operation for operation and in the same order
 //! (the dot products sum `(x + z) + (y + w)`, as glam's SSE2 `Vec4::dot` does), so on x86-64 the
 //! results are bit-identical to [`nlerp_corrected_quat`] and [`nlerp_quat`] (test
-//! `batch_equals_the_per_call_functions` in `tests/slerp.rs`).
+//! `batch_equals_the_per_call_functions` in `tests/tests/interp/slerp.rs`).
 
 use glam::{Mat4, Quat, Vec4};
 

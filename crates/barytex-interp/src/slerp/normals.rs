@@ -30,7 +30,7 @@ pub enum NormalInterpolation {
 ///
 /// # Accuracy
 /// `Slerp`: as [`slerp`]. `Renormalize`: angle to the evenly spaced normal within
-/// [`renormalize_spacing_error`]`(θ)` plus 2.4e-7 (test `normal_spacing` in `tests/slerp.rs`).
+/// [`renormalize_spacing_error`]`(θ)` plus 2.4e-7 (test `normal_spacing` in `tests/tests/interp/slerp.rs`).
 ///
 /// ```
 /// use barytex_interp::{interpolate_normal, NormalInterpolation};
@@ -56,7 +56,7 @@ pub fn interpolate_normal(n0: Vec3, n1: Vec3, t: f32, method: NormalInterpolatio
 /// it is found by golden-section search in f64.
 ///
 /// # Accuracy
-/// Within 1e-12 rad of the true maximum (test `spacing_error_formula` in `tests/slerp.rs`
+/// Within 1e-12 rad of the true maximum (test `spacing_error_formula` in `tests/tests/interp/slerp.rs`
 /// compares against a dense sampling).
 ///
 /// ```

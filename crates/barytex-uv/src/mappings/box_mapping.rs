@@ -203,7 +203,7 @@ impl PositionMapping for BoxMapping {
 ///
 /// # Accuracy
 /// The weights are non-negative and sum to 1 within 4 f32 ulps
-/// (`tests/mappings.rs::triplanar_weights_sum_to_one`).
+/// (`tests/tests/uv/mappings.rs::triplanar_weights_sum_to_one`).
 ///
 /// ```
 /// use barytex_uv::mappings::triplanar_weights;

@@ -35,11 +35,11 @@ pub enum CylinderCaps {
 /// Evaluated in f64 and rounded once. The Jacobian matches central finite differences to a
 /// relative 1e-7 at regular points, on the seam, and next to the axis down to a distance of
 /// 1e-12 (with steps scaled to the distance; measured 4.8e-11)
-/// (`tests/mappings.rs::jacobian_matches_finite_differences`,
-/// `tests/poles_and_seams.rs::jacobians_next_to_poles_and_seams`). `point_at` round trips within
+/// (`tests/tests/uv/mappings.rs::jacobian_matches_finite_differences`,
+/// `tests/tests/uv/poles_and_seams.rs::jacobians_next_to_poles_and_seams`). `point_at` round trips within
 /// 1e-6 in uv on the side, `u` compared modulo 1 across the seam, at every `(u, v)`
-/// (`tests/mappings.rs::round_trip_uv_point_uv`,
-/// `tests/poles_and_seams.rs::round_trips_on_every_row_and_column`).
+/// (`tests/tests/uv/mappings.rs::round_trip_uv_point_uv`,
+/// `tests/tests/uv/poles_and_seams.rs::round_trips_on_every_row_and_column`).
 ///
 /// ```
 /// use barytex_uv::mappings::{Cylindrical, InverseUvMapping};

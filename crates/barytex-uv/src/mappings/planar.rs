@@ -16,7 +16,7 @@ use crate::{PositionMapping, UvError, UvJacobian};
 ///
 /// # Accuracy
 /// Evaluated in f64 and rounded once: `uv` within 1 f32 ulp of the f64 formula, which matches
-/// central finite differences to a relative 1e-7 (`tests/mappings.rs::jacobian_matches_finite_differences`).
+/// central finite differences to a relative 1e-7 (`tests/tests/uv/mappings.rs::jacobian_matches_finite_differences`).
 ///
 /// ```
 /// use barytex_uv::mappings::Planar;

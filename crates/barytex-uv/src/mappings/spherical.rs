@@ -40,13 +40,13 @@ pub enum SphereProjection {
 /// relative 1e-7 at regular points, on the seam, and next to both poles down to a distance of
 /// 1e-12 from the axis (steps scaled to the distance; measured 4.9e-11). Near the south pole `v`
 /// is within an f64 ulp of 1, too coarse for differences there, so `∇v` is checked by its exact
-/// mirror symmetry `y → −y` instead (`tests/mappings.rs::jacobian_matches_finite_differences`,
-/// `tests/poles_and_seams.rs::jacobians_next_to_poles_and_seams`). `point_at` round trips at
+/// mirror symmetry `y → −y` instead (`tests/tests/uv/mappings.rs::jacobian_matches_finite_differences`,
+/// `tests/tests/uv/poles_and_seams.rs::jacobians_next_to_poles_and_seams`). `point_at` round trips at
 /// every `(u, v)`, poles and seam included: `v` within 1e-6, `u` within 1e-6 modulo 1 once
 /// weighted by `cos φ` (the length of a turn at that latitude; at a pole `u` names no position,
 /// and `uv` is `None` when the point lands on the axis)
-/// (`tests/mappings.rs::round_trip_uv_point_uv`,
-/// `tests/poles_and_seams.rs::round_trips_on_every_row_and_column`).
+/// (`tests/tests/uv/mappings.rs::round_trip_uv_point_uv`,
+/// `tests/tests/uv/poles_and_seams.rs::round_trips_on_every_row_and_column`).
 ///
 /// ```
 /// use barytex_uv::mappings::{InverseUvMapping, SphereProjection, Spherical};

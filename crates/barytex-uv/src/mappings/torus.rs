@@ -26,11 +26,11 @@ use crate::{PositionMapping, UvError, UvJacobian};
 /// 1e-12 (measured 6.9e-9); next to the core circle it does so down to a distance `d = 1e-3`:
 /// closer in, `d = √(x² + z²) − R` carries the rounding of the square root (up to 2⁻⁵³·R
 /// absolute), so `∇v ∝ 1/d` is good to about `2⁻⁵²·R/d` relative (as is any f64 evaluation from
-/// the rounded point) (`tests/mappings.rs::jacobian_matches_finite_differences`,
-/// `tests/poles_and_seams.rs::jacobians_next_to_poles_and_seams`). `point_at` round trips
+/// the rounded point) (`tests/tests/uv/mappings.rs::jacobian_matches_finite_differences`,
+/// `tests/tests/uv/poles_and_seams.rs::jacobians_next_to_poles_and_seams`). `point_at` round trips
 /// within 1e-6 in uv, both coordinates compared modulo 1 across the seams, at every `(u, v)`
-/// (`tests/mappings.rs::round_trip_uv_point_uv`,
-/// `tests/poles_and_seams.rs::round_trips_on_every_row_and_column`).
+/// (`tests/tests/uv/mappings.rs::round_trip_uv_point_uv`,
+/// `tests/tests/uv/poles_and_seams.rs::round_trips_on_every_row_and_column`).
 ///
 /// ```
 /// use barytex_uv::mappings::{InverseUvMapping, Torus};

@@ -1,7 +1,7 @@
 //! Parametric meshes: plane, cube, cylinder, sphere and torus as indexed triangle meshes with
 //! positions, unit normals, tangents and uvs, at a resolution the caller chooses.
 //!
-//! Conventions shared by every generator (each checked by `tests/meshes.rs`):
+//! Conventions shared by every generator (each checked by `crates/barytex-uv/tests/meshes.rs`):
 //! - **Seams are duplicated**: the `u = 0` and `u = 1` columns (and the torus's `v = 0` and
 //!   `v = 1` rows, the cube's face borders, the cylinder's cap rims) are separate vertices with
 //!   *bit-identical* positions, so welding equal positions closes the surface and no triangle
