@@ -212,8 +212,11 @@ fn has_symlink(path: &Path, roots: &[PathBuf]) -> bool {
 /// Reads `path` if it is a regular file of at most `max_bytes`.
 ///
 /// The type is checked before opening (opening a FIFO for reading blocks until a writer comes)
-/// and again on the opened handle (the name may have been replaced in between); the size from
-/// the metadata is not trusted either (a device reports 0): the read stops after `max_bytes + 1`.
+/// and again on the opened handle (the name may have been replaced in between). On Unix the
+/// open itself does not wait either: it asks for `O_NONBLOCK`, so a name swapped for a FIFO
+/// after the first check opens at once and the second check refuses it (for a regular file the
+/// flag changes nothing). The size from the metadata is not trusted either (a device reports
+/// 0): the read stops after `max_bytes + 1`.
 pub(crate) fn read_regular_file(path: &Path, max_bytes: u64) -> Result<Vec<u8>, ResolveError> {
     let meta = std::fs::metadata(path).map_err(ResolveError::Io)?;
     if !meta.is_file() {
@@ -222,7 +225,7 @@ pub(crate) fn read_regular_file(path: &Path, max_bytes: u64) -> Result<Vec<u8>, 
     if meta.len() > max_bytes {
         return Err(ResolveError::TooLarge(meta.len()));
     }
-    let file = File::open(path).map_err(ResolveError::Io)?;
+    let file = open_without_waiting(path).map_err(ResolveError::Io)?;
     let meta = file.metadata().map_err(ResolveError::Io)?;
     if !meta.is_file() {
         return Err(ResolveError::NotRegularFile);
@@ -239,6 +242,18 @@ pub(crate) fn read_regular_file(path: &Path, max_bytes: u64) -> Result<Vec<u8>, 
         return Err(ResolveError::TooLarge(bytes.len() as u64));
     }
     Ok(bytes)
+}
+
+/// Opens `path` for reading without waiting for a FIFO's writer (Unix: `O_NONBLOCK`).
+fn open_without_waiting(path: &Path) -> std::io::Result<File> {
+    let mut options = std::fs::OpenOptions::new();
+    options.read(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt as _;
+        options.custom_flags(libc::O_NONBLOCK);
+    }
+    options.open(path)
 }
 
 /// Reads the file `uri_path` through `files` for the object at `uri_ptr`: at most `limit`
@@ -315,5 +330,36 @@ mod tests {
         );
         assert_eq!(normalize(Path::new("/a/../..")), None);
         assert_eq!(normalize(Path::new("/a/..")), Some(PathBuf::from("/")));
+    }
+
+    /// The race the second type check closes: a name that is a FIFO by the time it is opened.
+    /// The open must return at once (no writer ever comes) and the handle's type check refuse
+    /// it. Skipped, with a note, where `mkfifo` cannot make one.
+    #[cfg(unix)]
+    #[test]
+    fn a_fifo_opens_without_waiting_and_is_refused() {
+        let dir = std::env::temp_dir().join(format!("barytex-fifo-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temporary folder");
+        let fifo = dir.join("image.png");
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+        if !made.is_ok_and(|status| status.success()) {
+            println!("note: mkfifo unavailable, FIFO test skipped");
+            let _ = std::fs::remove_dir_all(&dir);
+            return;
+        }
+        let (sender, receiver) = std::sync::mpsc::channel();
+        let path = fifo.clone();
+        std::thread::spawn(move || {
+            let opened =
+                open_without_waiting(&path).map(|file| file.metadata().map(|m| m.is_file()));
+            let _ = sender.send(opened.map(|is_file| is_file.ok()).ok());
+        });
+        let opened = receiver.recv_timeout(std::time::Duration::from_secs(10));
+        let _ = std::fs::remove_dir_all(&dir);
+        assert_eq!(
+            opened.expect("the open returned without a writer"),
+            Some(Some(false)),
+            "opened, and the handle is not a regular file"
+        );
     }
 }
