@@ -55,6 +55,11 @@ impl Limits {
     /// let small = Limits { max_bytes: 1 << 20, ..Limits::default() };
     /// assert!(matches!(small.check(1024, 1024, 16), Err(TextureError::TooLarge { what: "bytes", .. })));
     /// assert_eq!(Limits::UNLIMITED.check(1024, 1024, 16), Ok(16 << 20));
+    /// // No limit but the arithmetic: a size past u64 is refused, not saturated.
+    /// assert!(matches!(
+    ///     Limits::UNLIMITED.check(u32::MAX, u32::MAX, 16),
+    ///     Err(TextureError::TooLarge { what: "bytes", requested: u64::MAX, .. })
+    /// ));
     /// ```
     pub fn check(
         &self,
@@ -79,10 +84,19 @@ impl Limits {
                 limit: self.max_height.into(),
             });
         }
-        // u32 × u32 × (a texel's few bytes) fits u64 except for absurd texel sizes: saturate.
+        // u32 × u32 fits u64, but not times a texel's bytes for the largest sides (under
+        // `UNLIMITED`). An overflow is refused as "more than u64::MAX bytes", never saturated:
+        // a saturated product equal to an `u64::MAX` limit would pass.
         let bytes = u64::from(width)
-            .saturating_mul(u64::from(height))
-            .saturating_mul(bytes_per_texel as u64);
+            .checked_mul(u64::from(height))
+            .and_then(|texels| texels.checked_mul(bytes_per_texel as u64));
+        let Some(bytes) = bytes else {
+            return Err(TextureError::TooLarge {
+                what: "bytes",
+                requested: u64::MAX,
+                limit: self.max_bytes,
+            });
+        };
         if bytes > self.max_bytes || usize::try_from(bytes).is_err() {
             return Err(TextureError::TooLarge {
                 what: "bytes",
