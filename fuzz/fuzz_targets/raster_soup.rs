@@ -1,9 +1,9 @@
 //! Fuzz target `raster_soup`: arbitrary triangle soups (and watertight fans) through the whole
-//! draw call of barytex-raster. Decodes the input with
+//! draw call of barytex-raster, and the same vertices as points and as lines. Decodes the input with
 //! `barytex_tests::fuzz_inputs::raster_soup` (layout documented there, shared with the
 //! regression replay in `tests/tests/fuzz_regressions.rs`) and asserts `check_raster_soup`: no
-//! panic, no write outside the target or scissor, every triangle accounted for, fans covered at
-//! most once per pixel.
+//! panic, no write outside the target or scissor, every triangle, point and line accounted for,
+//! fans covered at most once per pixel.
 #![no_main]
 
 use barytex_tests::fuzz_inputs::raster_soup::{

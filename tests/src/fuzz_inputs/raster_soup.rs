@@ -7,15 +7,20 @@
 //! byte 5 mode: bits 0–2 kind 1 = the words are pixel positions on the 1/256 grid (a watertight
 //! fan around the target's centre is drawn instead of the soup); bits 3–5 samples (1 sample, MSAA
 //! standard 4, MSAA standard 16, 3×3 per-pixel jitter shaded per sample, 2×2 regular shaded per
-//! sample, 4 standard with affine spans of 8); then 4 words (x, y, z, w as f32 bit
-//! patterns) per vertex, 3 vertices per triangle.
+//! sample, 4 standard with affine spans of 8); bits 6–7 the line topology of the second draw
+//! (list, strip, loop, list); then 4 words (x, y, z, w as f32 bit patterns) per vertex, 3
+//! vertices per triangle.
+//!
+//! Every input is drawn three times into fresh targets with the same state: as triangles, then
+//! its vertices as points, then as lines of the topology above.
 
 use std::fmt::Write as _;
 use std::sync::atomic::{AtomicU32, Ordering};
 
 use barytex_raster::{
-    Blend, CullMode, DepthCompare, Fragment, Framebuffer, FrontFace, Interpolation, PipelineState,
-    SamplePattern, Scissor, Shader, TargetLimits, draw,
+    Blend, CullMode, DepthCompare, DrawStats, Fragment, Framebuffer, FrontFace, Interpolation,
+    LineTopology, PipelineState, SamplePattern, Scissor, Shader, TargetLimits, draw, draw_lines,
+    draw_points,
 };
 use glam::{Vec2, Vec4};
 
@@ -27,6 +32,8 @@ pub const SIDE: u32 = 16;
 pub const RASTER_SOUP_LEN: usize = 6 + 8 * 3 * 16;
 
 struct Recorder {
+    /// Fragments whose pixel is outside the target.
+    outside: AtomicU32,
     /// Fragments per pixel.
     counts: Vec<AtomicU32>,
     /// Coverage per pixel and sample (32 slots per pixel).
@@ -40,8 +47,11 @@ impl Shader for Recorder {
         (*v, Vec2::new(v.x, v.y))
     }
     fn fragment(&self, f: &Fragment<'_, Vec2>) -> Option<Vec4> {
+        if f.pixel.x >= SIDE || f.pixel.y >= SIDE {
+            self.outside.fetch_add(1, Ordering::Relaxed);
+            return None;
+        }
         let i = (f.pixel.y * SIDE + f.pixel.x) as usize;
-        // An index outside the target would panic here: that is the "no write outside" check.
         self.counts[i].fetch_add(1, Ordering::Relaxed);
         for k in 0..32 {
             if f.coverage & (1 << k) != 0 {
@@ -165,24 +175,80 @@ pub fn raster_soup_input(
     (state, pattern, vertices, indices, false)
 }
 
-/// The invariants: no panic; no fragment outside the target or the scissor; every triangle
-/// accounted for in the statistics; a fan of non-overlapping triangles covers each sample at most
-/// once (watertight, no double coverage).
+/// The line topology of the second draw (byte 5, bits 6–7).
+fn line_topology(bytes: &[u8]) -> LineTopology {
+    match bytes.get(5).copied().unwrap_or(0) >> 6 {
+        1 => LineTopology::Strip,
+        2 => LineTopology::Loop,
+        _ => LineTopology::List,
+    }
+}
+
+/// The invariants: no panic; no fragment outside the target or the scissor; every triangle,
+/// point and line accounted for in the statistics; a fan of non-overlapping triangles covers
+/// each sample at most once (watertight, no double coverage).
 ///
 /// # Errors
 /// A description of the first violated invariant.
 pub fn check_raster_soup(bytes: &[u8]) -> Result<(), String> {
     let (state, pattern, vertices, indices, fan) = raster_soup_input(bytes);
-    let recorder = Recorder {
-        counts: (0..SIDE * SIDE).map(|_| AtomicU32::new(0)).collect(),
-        samples: (0..SIDE * SIDE * 32).map(|_| AtomicU32::new(0)).collect(),
+    let stats = |recorder: &Recorder,
+                 what: &str,
+                 draw_into: &dyn Fn(&mut Framebuffer, &Recorder) -> DrawStats| {
+        let mut fb =
+            Framebuffer::multisampled(SIDE, SIDE, pattern, Vec4::ZERO, &TargetLimits::default())
+                .map_err(|e| e.to_string())?;
+        let stats = draw_into(&mut fb, recorder);
+        check_recorded(recorder, &state, pattern, fan && what == "triangles")
+            .map_err(|e| format!("{what}: {e}"))?;
+        Ok::<DrawStats, String>(stats)
     };
-    let mut fb =
-        Framebuffer::multisampled(SIDE, SIDE, pattern, Vec4::ZERO, &TargetLimits::default())
-            .map_err(|e| e.to_string())?;
-    let stats = draw(&mut fb, &recorder, &state, &vertices, &indices);
-    if stats.triangles_in != (indices.len() / 3) as u64 {
-        return Err(format!("{stats:?} for {} indices", indices.len()));
+    let triangles = stats(&Recorder::new(), "triangles", &|fb, r| {
+        draw(fb, r, &state, &vertices, &indices)
+    })?;
+    if triangles.triangles_in != (indices.len() / 3) as u64 {
+        return Err(format!("{triangles:?} for {} indices", indices.len()));
+    }
+    let points = stats(&Recorder::new(), "points", &|fb, r| {
+        draw_points(fb, r, &state, &vertices, &indices)
+    })?;
+    if points.points_in != indices.len() as u64 {
+        return Err(format!("{points:?} for {} points", indices.len()));
+    }
+    let topology = line_topology(bytes);
+    let lines = stats(&Recorder::new(), "lines", &|fb, r| {
+        draw_lines(fb, r, &state, &vertices, &indices, topology)
+    })?;
+    let segments = topology.segments(&indices).len();
+    if lines.lines_in != segments as u64 {
+        return Err(format!("{lines:?} for {segments} {topology:?} segments"));
+    }
+    Ok(())
+}
+
+impl Recorder {
+    fn new() -> Self {
+        Self {
+            outside: AtomicU32::new(0),
+            counts: (0..SIDE * SIDE).map(|_| AtomicU32::new(0)).collect(),
+            samples: (0..SIDE * SIDE * 32).map(|_| AtomicU32::new(0)).collect(),
+        }
+    }
+}
+
+/// What one draw recorded: nothing outside the target or the scissor, and (for a watertight
+/// fan) no sample covered twice.
+fn check_recorded(
+    recorder: &Recorder,
+    state: &PipelineState,
+    pattern: SamplePattern,
+    fan: bool,
+) -> Result<(), String> {
+    let outside = recorder.outside.load(Ordering::Relaxed);
+    if outside > 0 {
+        return Err(format!(
+            "{outside} fragments outside the {SIDE}×{SIDE} target"
+        ));
     }
     for (i, c) in recorder.counts.iter().enumerate() {
         let c = c.load(Ordering::Relaxed);
@@ -212,7 +278,11 @@ pub fn check_raster_soup(bytes: &[u8]) -> Result<(), String> {
 pub fn raster_soup_code(bytes: &[u8]) -> String {
     let (state, pattern, vertices, indices, fan) = raster_soup_input(bytes);
     let mut out = String::from("{\n");
-    let _ = writeln!(out, "    // {state:?}, {pattern:?}, fan = {fan}");
+    let topology = line_topology(bytes);
+    let _ = writeln!(
+        out,
+        "    // {state:?}, {pattern:?}, fan = {fan}, lines {topology:?}"
+    );
     let _ = writeln!(out, "    // vertices {vertices:?}, indices {indices:?}");
     let _ = writeln!(out, "    let bytes: &[u8] = &{bytes:?};");
     out.push_str("    assert_eq!(check_raster_soup(bytes), Ok(()));\n}");
