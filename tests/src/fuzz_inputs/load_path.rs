@@ -48,15 +48,46 @@ fn png(colour: [u8; 4]) -> Vec<u8> {
         .expect("a 4×4 PNG")
 }
 
-/// The sandbox folder (made on first use).
+/// The prefix of the sandbox folders in the temporary folder, followed by the process id.
+const SANDBOX_PREFIX: &str = "barytex-fuzz-load-path-";
+
+/// Removes the sandboxes of processes that have ended. Each process has its own (fuzzing jobs
+/// and test threads of different processes would otherwise overwrite each other's model), and a
+/// fuzzer ends by `exit`, which runs no destructor, so the folder outlives its process; the next
+/// process clears them. Where `/proc` does not list processes (not Linux) nothing is removed.
+fn remove_ended_sandboxes(temp: &Path) {
+    let proc = Path::new("/proc");
+    if !proc.join("self").exists() {
+        return;
+    }
+    let Ok(entries) = std::fs::read_dir(temp) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let Some(pid) = name
+            .to_str()
+            .and_then(|n| n.strip_prefix(SANDBOX_PREFIX))
+            .and_then(|pid| pid.parse::<u32>().ok())
+        else {
+            continue;
+        };
+        if pid != std::process::id() && !proc.join(pid.to_string()).exists() {
+            let _ = std::fs::remove_dir_all(entry.path());
+        }
+    }
+}
+
+/// The sandbox folder (made on first use; those of ended processes are removed then).
 ///
 /// # Panics
 /// When the temporary folder cannot be written.
 pub fn load_path_sandbox() -> &'static Path {
     static ROOT: OnceLock<PathBuf> = OnceLock::new();
     ROOT.get_or_init(|| {
-        let root =
-            std::env::temp_dir().join(format!("barytex-fuzz-load-path-{}", std::process::id()));
+        let temp = std::env::temp_dir();
+        remove_ended_sandboxes(&temp);
+        let root = temp.join(format!("{SANDBOX_PREFIX}{}", std::process::id()));
         let model = root.join("model");
         std::fs::create_dir_all(&model).expect("a temporary folder");
         let floats = |v: &[f32]| v.iter().flat_map(|x| x.to_le_bytes()).collect::<Vec<u8>>();
