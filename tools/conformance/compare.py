@@ -47,7 +47,7 @@ def matrices(text):
     blocks = {}
     for title, key in (("view (world", "view"), ("projection (glTF/OpenGL", "projection_gl")):
         lines = text.split(title, 1)[1].splitlines()[1:5]
-        blocks[key] = np.array([[float(v) for v in re.findall(r"-?\d+\.\d+", line)] for line in lines])
+        blocks[key] = np.array([[float(v) for v in re.findall(r"-?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?", line)] for line in lines])
     return blocks["view"], blocks["projection_gl"]
 
 

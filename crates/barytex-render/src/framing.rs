@@ -254,7 +254,10 @@ impl RenderCamera {
             .normalize_or_zero()
     }
 
-    /// The matrices as text (column vectors written as rows of the printed matrix).
+    /// The matrices as text (column vectors written as rows of the printed matrix). Every number
+    /// is written in the shortest form that reads back to the same `f32` (Rust's `Display`), so a
+    /// printed camera can be rebuilt exactly; fixed decimals would round a near plane of 1e-4's
+    /// projection terms to zero.
     ///
     /// ```
     /// use barytex_render::auto_camera;
@@ -271,7 +274,7 @@ impl RenderCamera {
     ///   "scenes": [{"nodes": [0, 1, 2]}]}"#;
     /// let scene = barytex_gltf::load_slice(gltf.as_bytes(), &barytex_gltf::LoadOptions::default())?;
     /// let text = auto_camera(&scene, 1.0).unwrap().describe();
-    /// assert!(text.starts_with("automatic camera, eye at (0.500000, 0.500000, "));
+    /// assert!(text.starts_with("automatic camera, eye at (0.5, 0.5, "));
     /// assert_eq!(text.lines().count(), 1 + 3 * 5); // a heading, then three titled 4×4 matrices
     /// # Ok::<(), barytex_gltf::SceneError>(())
     /// ```
@@ -282,10 +285,7 @@ impl RenderCamera {
             [t.x_axis, t.y_axis, t.z_axis, t.w_axis]
                 .iter()
                 .map(|r| {
-                    format!(
-                        "  [{:>12.6} {:>12.6} {:>12.6} {:>12.6}]",
-                        r.x, r.y, r.z, r.w
-                    )
+                    format!("  [{:>14} {:>14} {:>14} {:>14}]", r.x, r.y, r.z, r.w)
                 })
                 .collect::<Vec<_>>()
                 .join("\n")
@@ -295,7 +295,7 @@ impl RenderCamera {
             CameraSource::Auto => "automatic camera".to_owned(),
         };
         format!(
-            "{source}, eye at ({:.6}, {:.6}, {:.6})\nview (world → view):\n{}\nprojection \
+            "{source}, eye at ({}, {}, {})\nview (world → view):\n{}\nprojection \
              (glTF/OpenGL, z in [−w, w]):\n{}\nprojection used (z in [0, w]):\n{}",
             self.eye.x,
             self.eye.y,

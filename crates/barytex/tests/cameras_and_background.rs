@@ -97,11 +97,11 @@ fn camera_n_is_the_documents_camera_n() {
     let (code, stdout, stderr) = render("0");
     assert_eq!(code, Some(0), "{stderr}");
     assert!(stdout.contains("glTF camera 0,"), "{stdout}");
-    assert_eq!(eye(&stdout), "(0.250000, 0.250000, 3.000000)", "{stdout}");
+    assert_eq!(eye(&stdout), "(0.25, 0.25, 3)", "{stdout}");
     let (code, stdout, stderr) = render("1");
     assert_eq!(code, Some(0), "{stderr}");
     assert!(stdout.contains("glTF camera 1,"), "{stdout}");
-    assert_eq!(eye(&stdout), "(0.250000, 0.250000, 8.000000)", "{stdout}");
+    assert_eq!(eye(&stdout), "(0.25, 0.25, 8)", "{stdout}");
     // Without --camera: the first camera the scene places (node 1's, camera 1).
     let (code, stdout, stderr) = render("");
     assert_eq!(code, Some(0), "{stderr}");
