@@ -1,0 +1,79 @@
+//! Sparse linear algebra: a compressed-sparse-row matrix and two Krylov solvers.
+//!
+//! # Why hand-written Krylov solvers
+//! Every system this crate solves is a discrete Laplacian or the LSCM normal equations, both
+//! sparse with about seven non-zeros per row. The symmetric ones (Tutte with uniform weights,
+//! harmonic, the LSCM normal equations, the ARAP global step) are symmetric positive definite
+//! once the boundary or the pins are removed, so the preconditioned conjugate gradient method
+//! (Hestenes and Stiefel 1952; Saad, *Iterative Methods for Sparse Linear Systems*, 2nd ed.,
+//! 2003, algorithm 9.1) converges; Floater's mean-value weights make the matrix non-symmetric
+//! (but an M-matrix), solved with BiCGSTAB (van der Vorst 1992; Saad algorithm 7.7). Both use a
+//! Jacobi (diagonal) preconditioner and a warm start, which the ARAP iterations exploit.
+//!
+//! A sparse direct factorization (faer's sparse Cholesky/LU) was the alternative: it would add
+//! a large dependency tree to the crate (whose `cargo tree` count CI checks) and its compile
+//! time to a 2-core CI; the measurements that decided are in the crate README ("Solver").
+
+mod bicgstab;
+mod cg;
+mod csr;
+
+pub(crate) use bicgstab::bicgstab;
+pub(crate) use cg::conjugate_gradient;
+pub(crate) use csr::{CsrMatrix, Triplets};
+
+/// How an iterative solve ended.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SolveReport {
+    /// Iterations run.
+    pub iterations: u32,
+    /// The final relative residual `‖b − A x‖ / ‖b‖` (0 for `b = 0`).
+    pub relative_residual: f64,
+    /// Whether the residual reached the tolerance.
+    pub converged: bool,
+}
+
+/// Stopping rule of the iterative solvers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct SolveControl {
+    /// Target relative residual.
+    pub(crate) tolerance: f64,
+    /// Iteration cap.
+    pub(crate) max_iterations: u32,
+}
+
+impl SolveControl {
+    /// The default for a system of `n` unknowns: relative residual 1e-12, at most
+    /// `max(2000, 4 n)` iterations (Jacobi-preconditioned CG on a 2-D Laplacian needs
+    /// O(√n) to O(n) iterations).
+    pub(crate) fn for_size(n: usize, tolerance: f64) -> Self {
+        let cap = (4 * n).clamp(2000, u32::MAX as usize) as u32;
+        Self {
+            tolerance,
+            max_iterations: cap,
+        }
+    }
+}
+
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+fn norm(a: &[f64]) -> f64 {
+    dot(a, a).sqrt()
+}
+
+/// The inverse diagonal for the Jacobi preconditioner (1 where the diagonal is not a positive
+/// finite number, so the preconditioner stays defined).
+fn jacobi(a: &CsrMatrix) -> Vec<f64> {
+    a.diagonal()
+        .into_iter()
+        .map(|d| {
+            if d > 0.0 && d.is_finite() {
+                1.0 / d
+            } else {
+                1.0
+            }
+        })
+        .collect()
+}
