@@ -41,6 +41,7 @@ mod lscm;
 mod mesh;
 mod param;
 mod segment;
+pub mod shapes;
 mod sparse;
 mod topology;
 

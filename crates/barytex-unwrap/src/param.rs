@@ -165,12 +165,12 @@ fn validate(options: &ParamOptions, vertices: u32) -> Result<(), UnwrapError> {
             name: "cone_degrees",
         });
     }
-    if !(options.max_angle_distortion >= 1.0) {
+    if options.max_angle_distortion.is_nan() || options.max_angle_distortion < 1.0 {
         return Err(UnwrapError::InvalidOption {
             name: "max_angle_distortion",
         });
     }
-    if !(options.max_area_distortion >= 1.0) {
+    if options.max_area_distortion.is_nan() || options.max_area_distortion < 1.0 {
         return Err(UnwrapError::InvalidOption {
             name: "max_area_distortion",
         });

@@ -62,13 +62,12 @@ pub(crate) fn place_boundary(
                     let s = 4.0 * t;
                     let (edge, f) = (s.floor().min(3.0), s - s.floor().min(3.0));
                     let h = 0.5 * side;
-                    let p = match edge as u8 {
+                    match edge as u8 {
                         0 => DVec2::new(-h + f * side, -h),
                         1 => DVec2::new(h, -h + f * side),
                         2 => DVec2::new(h - f * side, h),
                         _ => DVec2::new(-h, h - f * side),
-                    };
-                    p
+                    }
                 }
             }
         })

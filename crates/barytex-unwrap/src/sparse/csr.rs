@@ -37,8 +37,7 @@ pub(crate) struct CsrMatrix {
 impl CsrMatrix {
     /// Sums the triplets into rows sorted by column.
     pub(crate) fn from_triplets(mut t: Triplets) -> Result<Self, UnwrapError> {
-        t.entries
-            .sort_unstable_by(|a, b| (a.0, a.1).cmp(&(b.0, b.1)));
+        t.entries.sort_unstable_by_key(|e| (e.0, e.1));
         let mut row_start = try_vec_with_capacity(t.n + 1, "matrix rows")?;
         let mut columns = try_vec_with_capacity(t.entries.len(), "matrix entries")?;
         let mut values = try_vec_with_capacity(t.entries.len(), "matrix entries")?;

@@ -82,7 +82,7 @@ impl HalfEdgeMesh {
         let mut twin: Vec<u32> = try_vec_with_capacity(h_count, "half-edges")?;
         twin.resize(h_count, NONE);
         for &(key, h) in &keys {
-            let reverse = (key << 32) | (key >> 32);
+            let reverse = key.rotate_right(32);
             if let Ok(k) = keys.binary_search_by(|probe| probe.0.cmp(&reverse)) {
                 twin[h as usize] = keys[k].1;
             }
@@ -166,7 +166,7 @@ impl HalfEdgeMesh {
     /// The half-edge before `h` in its triangle.
     #[must_use]
     pub fn prev(h: u32) -> u32 {
-        if h % 3 == 0 { h + 2 } else { h - 1 }
+        if h.is_multiple_of(3) { h + 2 } else { h - 1 }
     }
 
     /// The vertex half-edge `h` leaves.
