@@ -18,7 +18,10 @@ fn assert_bijective(
     prop_assert!(e.solve.converged, "{weights:?}: {:?}", e.solve);
     for t in triangles {
         let uv: [DVec2; 3] = t.map(|v| e.uvs[v as usize]);
-        prop_assert!(is_positively_oriented(uv), "{weights:?}: triangle {t:?} at {uv:?}");
+        prop_assert!(
+            is_positively_oriented(uv),
+            "{weights:?}: triangle {t:?} at {uv:?}"
+        );
     }
     prop_assert_eq!(e.flips, 0);
     Ok(())
@@ -51,8 +54,13 @@ proptest! {
 #[test]
 fn boundary_lies_on_the_circle_by_arc_length() {
     let g = barytex_unwrap::shapes::grid(4, 4, |_, _| 0.0);
-    let e = embed_disk(g.positions(), g.triangles(), Weights::Uniform, BoundaryShape::Circle)
-        .expect("a disk");
+    let e = embed_disk(
+        g.positions(),
+        g.triangles(),
+        Weights::Uniform,
+        BoundaryShape::Circle,
+    )
+    .expect("a disk");
     // Perimeter 4: the circle's radius is 4 / 2π.
     let r = 4.0 / core::f64::consts::TAU;
     for (v, p) in g.positions().iter().enumerate() {
@@ -81,7 +89,9 @@ fn square_boundary_counts_triangles_with_three_vertices_on_one_side() {
     let square = embed_disk(&p, &t, Weights::Uniform, BoundaryShape::Square).expect("a disk");
     let circle = embed_disk(&p, &t, Weights::Uniform, BoundaryShape::Circle).expect("a disk");
     assert_eq!(circle.flips, 0);
-    assert!(!is_positively_oriented(t[0].map(|v| square.uvs[v as usize])));
+    assert!(!is_positively_oriented(
+        t[0].map(|v| square.uvs[v as usize])
+    ));
     assert!(square.flips > 0);
 }
 
@@ -110,6 +120,20 @@ fn harmonic_weights_can_flip_and_the_flips_are_counted() {
 #[test]
 fn not_a_disk_is_an_error() {
     let s = barytex_unwrap::shapes::sphere(4, 6);
-    let e = embed_disk(s.positions(), s.triangles(), Weights::Uniform, BoundaryShape::Circle);
-    assert!(matches!(e, Err(barytex_unwrap::UnwrapError::NotADisk { boundary_loops: 0, .. })), "{e:?}");
+    let e = embed_disk(
+        s.positions(),
+        s.triangles(),
+        Weights::Uniform,
+        BoundaryShape::Circle,
+    );
+    assert!(
+        matches!(
+            e,
+            Err(barytex_unwrap::UnwrapError::NotADisk {
+                boundary_loops: 0,
+                ..
+            })
+        ),
+        "{e:?}"
+    );
 }

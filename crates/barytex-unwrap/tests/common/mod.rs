@@ -56,7 +56,12 @@ pub fn disk_points() -> impl Strategy<Value = Vec<DVec2>> {
 
 /// A `n × m` grid over the unit square with interior vertices moved by up to 0.3 of a cell, lifted
 /// by `h`.
-pub fn perturbed_grid(n: u32, m: u32, jitter: &[(f64, f64)], h: &Height) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+pub fn perturbed_grid(
+    n: u32,
+    m: u32,
+    jitter: &[(f64, f64)],
+    h: &Height,
+) -> (Vec<DVec3>, Vec<[u32; 3]>) {
     let grid = barytex_unwrap::shapes::grid(n, m, |_, _| 0.0);
     let mut k = 0;
     let positions = grid
