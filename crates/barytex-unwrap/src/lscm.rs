@@ -15,7 +15,7 @@ use glam::{DVec2, DVec3};
 
 use crate::embed::{Embedding, TOLERANCE, worse};
 use crate::geometry::{doubled_area_2d, flatten};
-use crate::sparse::{CsrMatrix, SolveControl, SolveReport, Triplets, conjugate_gradient};
+use crate::sparse::{CsrMatrix, SolveControl, SolveReport, Triplets, solve_spd, try_factor};
 use crate::topology::{HalfEdgeMesh, NONE};
 use crate::{UnwrapError, check};
 
@@ -82,8 +82,10 @@ pub(crate) fn lscm_with_boundary(
             unknowns += 1;
         }
     }
+    // Nothing to solve is a converged, exact solve.
     let mut solve = SolveReport {
         converged: true,
+        direct: true,
         ..SolveReport::default()
     };
     if unknowns > 0 {
@@ -129,8 +131,17 @@ pub(crate) fn lscm_with_boundary(
         }
         let matrix = CsrMatrix::from_triplets(t)?;
         let mut x = initial_guess(positions, mesh.triangles(), &index, unknowns, a, b, &uvs);
-        let report =
-            conjugate_gradient(&matrix, &rhs, &mut x, SolveControl::for_size(m, TOLERANCE));
+        let mut coords = vec![DVec3::ZERO; m];
+        for v in 0..n {
+            let i = index[v];
+            if i != NONE {
+                coords[2 * i as usize] = positions[v];
+                coords[2 * i as usize + 1] = positions[v];
+            }
+        }
+        let factor = try_factor(&matrix, &coords);
+        let control = SolveControl::for_size(m, TOLERANCE);
+        let report = solve_spd(&matrix, factor.as_ref(), &rhs, &mut x, control);
         for v in 0..n {
             let i = index[v];
             if i != NONE {

@@ -17,7 +17,9 @@ pub use weights::Weights;
 
 use glam::{DVec2, DVec3};
 
-use crate::sparse::{CsrMatrix, SolveControl, SolveReport, Triplets, bicgstab, conjugate_gradient};
+use crate::sparse::{
+    CsrMatrix, SolveControl, SolveReport, Triplets, bicgstab, solve_spd, try_factor,
+};
 use crate::topology::{HalfEdgeMesh, NONE};
 use crate::{UnwrapError, check};
 
@@ -99,8 +101,10 @@ pub(crate) fn embed_with_boundary(
             unknowns += 1;
         }
     }
+    // Nothing to solve is a converged, exact solve.
     let mut solve = SolveReport {
         converged: true,
+        direct: true,
         ..SolveReport::default()
     };
     if unknowns > 0 {
@@ -122,13 +126,25 @@ pub(crate) fn embed_with_boundary(
         }
         let a = CsrMatrix::from_triplets(t)?;
         let control = SolveControl::for_size(unknowns, TOLERANCE);
+        // Symmetric weights: one factorization for both coordinates.
+        let factor = if weights == Weights::MeanValue {
+            None
+        } else {
+            let mut coords = vec![DVec3::ZERO; unknowns];
+            for v in 0..n {
+                if index[v] != NONE {
+                    coords[index[v] as usize] = positions[v];
+                }
+            }
+            try_factor(&a, &coords)
+        };
         for axis in 0..2 {
             let b: Vec<f64> = rhs.iter().map(|r| r[axis]).collect();
             let mut x = vec![0.0; unknowns];
             let report = match weights {
                 Weights::MeanValue => bicgstab(&a, &b, &mut x, control),
                 Weights::Uniform | Weights::Cotangent => {
-                    conjugate_gradient(&a, &b, &mut x, control)
+                    solve_spd(&a, factor.as_ref(), &b, &mut x, control)
                 }
             };
             for v in 0..n {
@@ -147,6 +163,7 @@ pub(crate) fn embed_with_boundary(
 pub(crate) fn worse(a: SolveReport, b: SolveReport) -> SolveReport {
     SolveReport {
         iterations: a.iterations.max(b.iterations),
+        direct: a.direct && b.direct,
         relative_residual: a.relative_residual.max(b.relative_residual),
         converged: a.converged && b.converged,
     }

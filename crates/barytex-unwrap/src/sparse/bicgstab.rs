@@ -84,5 +84,6 @@ pub(crate) fn bicgstab(
         iterations,
         relative_residual: residual,
         converged: residual <= control.tolerance,
+        direct: false,
     }
 }

@@ -65,5 +65,6 @@ pub(crate) fn conjugate_gradient(
         iterations,
         relative_residual: residual,
         converged: residual <= control.tolerance,
+        direct: false,
     }
 }

@@ -29,9 +29,9 @@ impl Triplets {
 /// A square sparse matrix in compressed-sparse-row form.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct CsrMatrix {
-    row_start: Vec<usize>,
-    columns: Vec<u32>,
-    values: Vec<f64>,
+    pub(crate) row_start: Vec<usize>,
+    pub(crate) columns: Vec<u32>,
+    pub(crate) values: Vec<f64>,
 }
 
 impl CsrMatrix {

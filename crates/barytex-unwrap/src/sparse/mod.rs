@@ -16,10 +16,13 @@
 
 mod bicgstab;
 mod cg;
+mod cholesky;
 mod csr;
+mod ordering;
 
 pub(crate) use bicgstab::bicgstab;
 pub(crate) use cg::conjugate_gradient;
+pub(crate) use cholesky::Cholesky;
 pub(crate) use csr::{CsrMatrix, Triplets};
 
 /// How an iterative solve ended.
@@ -31,6 +34,9 @@ pub struct SolveReport {
     pub relative_residual: f64,
     /// Whether the residual reached the tolerance.
     pub converged: bool,
+    /// Whether a sparse Cholesky factorization solved it (`iterations` then counts iterative
+    /// refinement steps).
+    pub direct: bool,
 }
 
 /// Stopping rule of the iterative solvers.
@@ -53,6 +59,62 @@ impl SolveControl {
             max_iterations: cap,
         }
     }
+}
+
+/// Solves the symmetric positive definite `A x = b` with a factorization when given one (plus up
+/// to two steps of iterative refinement), falling back to conjugate gradients from the result
+/// when the residual is still above the tolerance (or without a factorization).
+pub(crate) fn solve_spd(
+    a: &CsrMatrix,
+    factor: Option<&Cholesky>,
+    b: &[f64],
+    x: &mut [f64],
+    control: SolveControl,
+) -> SolveReport {
+    let Some(factor) = factor else {
+        return conjugate_gradient(a, b, x, control);
+    };
+    let b_norm = norm(b);
+    factor.solve(b, x);
+    let mut r = vec![0.0; b.len()];
+    let mut dx = vec![0.0; b.len()];
+    let mut refinements = 0;
+    loop {
+        a.mul(x, &mut r);
+        for (r, b) in r.iter_mut().zip(b) {
+            *r = b - *r;
+        }
+        let residual = if b_norm > 0.0 {
+            norm(&r) / b_norm
+        } else {
+            norm(&r)
+        };
+        if residual <= control.tolerance {
+            return SolveReport {
+                iterations: refinements,
+                relative_residual: residual,
+                converged: true,
+                direct: true,
+            };
+        }
+        if refinements == 2 || !residual.is_finite() {
+            if !residual.is_finite() {
+                x.fill(0.0);
+            }
+            return conjugate_gradient(a, b, x, control);
+        }
+        factor.solve(&r, &mut dx);
+        for (x, d) in x.iter_mut().zip(&dx) {
+            *x += d;
+        }
+        refinements += 1;
+    }
+}
+
+/// A factorization of `a` ordered by `coords`, or `None` when it is not positive definite
+/// numerically, too large, or does not fit in memory (the callers then iterate).
+pub(crate) fn try_factor(a: &CsrMatrix, coords: &[glam::DVec3]) -> Option<Cholesky> {
+    Cholesky::factor(a, coords).ok()
 }
 
 fn dot(a: &[f64], b: &[f64]) -> f64 {
