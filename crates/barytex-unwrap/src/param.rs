@@ -56,10 +56,12 @@ pub struct ParamOptions {
     /// charts.
     pub cone_degrees: f64,
     /// A chart whose area-weighted mean angle distortion `σ1/σ2` exceeds this is split in two
-    /// (default 1.5; at least 1; infinity never splits).
+    /// (default 1.5; at least 1; infinity never splits). Free-boundary methods only
+    /// ([`Method::Lscm`], [`Method::LscmArap`]): a fixed boundary's distortion comes from the
+    /// boundary curve, and halves of a chart are pinned to curves again.
     pub max_angle_distortion: f64,
     /// A chart whose area-weighted mean area distortion exceeds this is split in two (default
-    /// 3; at least 1).
+    /// 3; at least 1). Free-boundary methods only, as above.
     pub max_area_distortion: f64,
     /// ARAP iterations at most (default 20).
     pub max_iterations: u32,
@@ -502,7 +504,11 @@ impl Context<'_> {
                 }
             }
         }
-        if m >= MIN_FACES_TO_SPLIT {
+        // Only the free-boundary methods gain from smaller charts: a fixed boundary's distortion
+        // comes from the circle (or square) itself, and halving a chart leaves two pieces pinned
+        // to circles again, each as distorted, so they are never split for distortion.
+        let free_boundary = matches!(self.options.method, Method::Lscm | Method::LscmArap);
+        if free_boundary && m >= MIN_FACES_TO_SPLIT {
             let s = chart_stats(self.mesh, &chart);
             if s.angle_distortion_mean > self.options.max_angle_distortion
                 || s.area_distortion_mean > self.options.max_area_distortion
