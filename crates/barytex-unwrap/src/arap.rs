@@ -119,6 +119,13 @@ fn energy(elements: &[(usize, Element)], triangles: &[[u32; 3]], uvs: &[DVec2]) 
 /// assert!(r.energy_after <= r.energy_before);
 /// ```
 ///
+/// # Accuracy
+/// Exact on flips: `flips_after ≤ flips_before`, both counted by exact `orient2d`, and the energy
+/// never rises (`lscm_arap.rs::arap_never_increases_flips`, from LSCM and from scrambled starts).
+/// On a developable surface (a bent strip) started from a mean-value embedding on a circle, the
+/// energy drops below 1% of the start and every edge keeps its length within 2%
+/// (`lscm_arap.rs::arap_recovers_the_isometry_of_a_developable_strip`).
+///
 /// # Errors
 /// [`UnwrapError::OutOfMemory`] when the matrix does not fit; [`UnwrapError::IndexOutOfRange`]
 /// for a triangle naming a vertex past `positions` or `uvs`.

@@ -42,6 +42,11 @@ pub struct ChartStats {
 
 /// The distortion of `chart` (texture coordinates of `mesh`'s triangles).
 ///
+/// # Accuracy
+/// The singular values come from Blinn's closed form, within `1e-14` relative of the exact ones
+/// for a scaled rotation (`geometry.rs` unit test); a uniform scaling measures 1 within `1e-12`
+/// and a 1 : 4 stretch 4 within `1e-12` (the example below).
+///
 /// ```
 /// use barytex_unwrap::{Chart, UnwrapMesh, chart_stats};
 /// use glam::{DVec2, DVec3};

@@ -152,6 +152,15 @@ pub struct Parameterization {
 /// assert!(charts.iter().all(|c| flipped_triangles(c) == 0));
 /// ```
 ///
+/// # Accuracy
+/// Exact where it matters: every returned triangle is positively oriented by Shewchuk's exact
+/// `orient2d` (tests `param.rs::closed_meshes_become_disks_without_flips`,
+/// `random_soups_never_flip`, the fixture test on Suzanne and the `unwrap_param` fuzz target).
+/// Distortion is bounded by the options for the free-boundary methods: every chart of 8 or more
+/// triangles has mean angle distortion `≤ max_angle_distortion` and mean area distortion
+/// `≤ max_area_distortion` ([`crate::chart_stats`]); a flat piece (a cube face) comes back
+/// isometric within `1e-9` (`param.rs::a_cube_splits_along_its_creases`).
+///
 /// # Errors
 /// [`UnwrapError::InvalidOption`] for an option out of range;
 /// [`UnwrapError::NonManifoldEdge`] / [`UnwrapError::NonManifoldVertex`] under
@@ -497,8 +506,7 @@ impl Context<'_> {
                 .map(|i| (p[i] - p[(i + 1) % 3]).length())
                 .fold(0.0, f64::max);
             let rt = right_triangle(leg);
-            for (t, tri) in chart.triangles.iter().enumerate() {
-                let _ = t;
+            for tri in &chart.triangles {
                 for k in 0..3 {
                     chart.uvs[tri[k] as usize] = rt[k];
                 }

@@ -58,6 +58,16 @@ pub(crate) const TOLERANCE: f64 = 1e-12;
 /// assert!(e.uvs[4].length() < 1e-12); // the centre, by symmetry
 /// ```
 ///
+/// # Accuracy
+/// The linear system is solved to a relative residual `≤ 1e-12` (sparse Cholesky for the
+/// symmetric weights, measured `5e-15` on a 51 200-triangle grid; BiCGSTAB for mean value), the
+/// boundary lies on the circle within `1e-12` of its radius
+/// (`embed.rs::boundary_lies_on_the_circle_by_arc_length`). For [`Weights::Uniform`] and
+/// [`Weights::MeanValue`] on a circle, every triangle is positively oriented by exact
+/// `orient2d` on random Delaunay disks lifted onto height fields and on perturbed lifted grids
+/// (`embed.rs::tutte_and_mean_value_on_random_delaunay_disks`, `…_on_perturbed_lifted_grids`);
+/// [`Embedding::flips`] reports any exception exactly.
+///
 /// # Errors
 /// [`UnwrapError::NotADisk`] unless the triangles form one disk; the errors of
 /// [`HalfEdgeMesh::from_triangles`]; [`UnwrapError::IndexOutOfRange`] for an index past
