@@ -158,8 +158,8 @@ impl Cholesky {
                 w[self.rows[p] as usize] -= self.values[p] * wj;
             }
         }
-        for j in 0..n {
-            w[j] /= self.diag[j];
+        for (w, d) in w.iter_mut().zip(&self.diag) {
+            *w /= d;
         }
         for j in (0..n).rev() {
             let mut s = w[j];
