@@ -84,7 +84,7 @@ pub fn unwrap_param_input(bytes: &[u8]) -> (Vec<DVec3>, Vec<[u32; 3]>, ParamOpti
                 .collect();
             (p, m.triangles().to_vec())
         }
-        4 | 5 | 6 => {
+        4..=6 => {
             let m = match kind {
                 4 => shapes::sphere(2 + size % 6, 3 + size % 8),
                 5 => shapes::torus(
