@@ -95,26 +95,38 @@ fn square_boundary_counts_triangles_with_three_vertices_on_one_side() {
     assert!(square.flips > 0);
 }
 
+/// Harmonic weights turn negative on obtuse pairs; on strongly jittered grids lifted onto steep
+/// height fields some embeddings flip. Mean value never does on the same meshes, and the
+/// reported count is the exact one.
 #[test]
 fn harmonic_weights_can_flip_and_the_flips_are_counted() {
-    // A fan whose centre sits near one boundary edge of a long thin polygon, lifted: angles
-    // opposite some edges exceed π/2 on both sides, making weights negative.
-    let n = 24;
-    let mut p = vec![glam::DVec3::new(0.0, -0.95, 0.0)];
-    for k in 0..n {
-        let a = core::f64::consts::TAU * f64::from(k) / f64::from(n);
-        p.push(glam::DVec3::new(3.0 * a.cos(), a.sin(), 0.0));
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    };
+    let mut harmonic_flips = 0;
+    for _ in 0..60 {
+        let jitter: Vec<(f64, f64)> = (0..64).map(|_| (1.6 * next(), 1.6 * next())).collect();
+        let h = common::Height {
+            waves: [(next(), 9.0 * next(), 9.0 * next(), 3.0 * next()); 3],
+        };
+        let (p, t) = perturbed_grid(8, 8, &jitter, &h);
+        let harmonic =
+            embed_disk(&p, &t, Weights::Cotangent, BoundaryShape::Circle).expect("a disk");
+        let mean = embed_disk(&p, &t, Weights::MeanValue, BoundaryShape::Circle).expect("a disk");
+        assert_eq!(mean.flips, 0);
+        let exact = t
+            .iter()
+            .filter(|t| !is_positively_oriented(t.map(|v| harmonic.uvs[v as usize])))
+            .count();
+        assert_eq!(harmonic.flips, exact);
+        harmonic_flips += exact;
     }
-    let t: Vec<[u32; 3]> = (0..n).map(|k| [0, 1 + k, 1 + (k + 1) % n]).collect();
-    let h = embed_disk(&p, &t, Weights::Cotangent, BoundaryShape::Circle).expect("a disk");
-    let m = embed_disk(&p, &t, Weights::MeanValue, BoundaryShape::Circle).expect("a disk");
-    assert_eq!(m.flips, 0);
-    // Whatever the harmonic map does, its count is the exact count.
-    let exact = t
-        .iter()
-        .filter(|t| !is_positively_oriented(t.map(|v| h.uvs[v as usize])))
-        .count();
-    assert_eq!(h.flips, exact);
+    println!("harmonic flips over 60 meshes: {harmonic_flips}");
+    assert!(harmonic_flips > 0, "the negative-weight caveat is real");
 }
 
 #[test]
