@@ -123,8 +123,9 @@ pub struct Parameterization {
 
 /// Texture coordinates for every triangle of `mesh`, as charts: each a topological disk,
 /// flattened with `options.method`, with no flipped triangle (decided exactly, see
-/// [`crate::flipped_triangles`]). The uvs are in surface units (a chart's uv area is about its
-/// surface area), each chart in its own frame: packing them into the unit square is a later step.
+/// [`crate::flipped_triangles`]). The uvs are in surface units — each chart scaled so its uv
+/// area equals its surface area, so all charts share one texel density — each chart in its own
+/// frame: packing them into the unit square is a later step.
 ///
 /// Every mesh triangle belongs to exactly one chart. Degenerate triangles (a repeated vertex, or
 /// zero area: doubled area below `1e-12 ×` longest edge²) each get a chart of their own, a right
@@ -398,6 +399,28 @@ fn degenerate_chart(mesh: &UnwrapMesh, face: u32, mean_edge: f64) -> Chart {
     }
 }
 
+/// `uvs` scaled about the origin so the uv area equals the surface area of `triangles` over
+/// `pos`, when that keeps every triangle's exact orientation; `uvs` unchanged otherwise.
+fn equal_area(pos: &[DVec3], triangles: &[[u32; 3]], uvs: Vec<DVec2>) -> Vec<DVec2> {
+    let (mut surface, mut uv_area) = (0.0, 0.0);
+    for t in triangles {
+        let p = t.map(|v| pos[v as usize]);
+        surface += 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).length();
+        let q = t.map(|v| uvs[v as usize]);
+        uv_area += 0.5 * (q[1] - q[0]).perp_dot(q[2] - q[0]);
+    }
+    let s = (surface / uv_area).sqrt();
+    if !(s.is_finite() && s > 0.0) || s == 1.0 {
+        return uvs;
+    }
+    let scaled: Vec<DVec2> = uvs.iter().map(|&u| u * s).collect();
+    if check::count_flips(&scaled, triangles) <= check::count_flips(&uvs, triangles) {
+        scaled
+    } else {
+        uvs
+    }
+}
+
 /// What every chart needs from the whole mesh.
 struct Context<'a> {
     mesh: &'a UnwrapMesh,
@@ -492,7 +515,10 @@ impl Context<'_> {
         } else {
             self.flatten_chart(&pos, &he, &boundary)?
         };
-        // Back to surface units (exact: a power of two), then the exact check.
+        // Same uv area as surface area (one texel density across charts, whatever the method's
+        // own scale: a circle's, two pins'), unless rounding would flip a triangle; then back to
+        // surface units (exact: a power of two), then the exact check.
+        let uvs = equal_area(&pos, &triangles, uvs);
         let uvs: Vec<DVec2> = uvs.iter().map(|&u| u / self.scale).collect();
         let mut chart = self.expand(region, &class, &triangles, &uvs);
         if check::flipped_triangles(&chart) > 0 {

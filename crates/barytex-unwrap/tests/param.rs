@@ -85,6 +85,17 @@ fn closed_meshes_become_disks_without_flips() {
             let p = parameterize_with_report(&mesh, &options).expect("unwrapped");
             check_atlas(&mesh, &p.charts);
             assert!(p.charts.len() >= 2, "{name}: a closed surface needs a cut");
+            // Surface units: every chart's uv area is its surface area.
+            for c in &p.charts {
+                let s = chart_stats(&mesh, c);
+                let rel = (s.uv_area / s.surface_area - 1.0).abs();
+                assert!(
+                    rel < 1e-9,
+                    "{name} {method:?}: uv area {} vs {}",
+                    s.uv_area,
+                    s.surface_area
+                );
+            }
             if matches!(method, Method::Lscm | Method::LscmArap) {
                 for c in &p.charts {
                     let s = chart_stats(&mesh, c);
