@@ -62,7 +62,16 @@ fn assert_disk(mesh: &UnwrapMesh, chart: &barytex_unwrap::Chart, what: &str) {
 
 #[test]
 fn suzanne_unwraps_into_disks_without_flips() {
-    let Some(mesh) = load_mesh("Suzanne") else {
+    unwrap_fixture("Suzanne");
+}
+
+#[test]
+fn avocado_unwraps_into_disks_without_flips() {
+    unwrap_fixture("Avocado");
+}
+
+fn unwrap_fixture(model: &str) {
+    let Some(mesh) = load_mesh(model) else {
         return;
     };
     for method in [
@@ -99,7 +108,7 @@ fn suzanne_unwraps_into_disks_without_flips() {
             "{method:?}: every triangle once"
         );
         println!(
-            "Suzanne {method:?}: {} triangles, {} charts, {} fallbacks, angle {:.4}, area {:.4}, {seconds:.3} s",
+            "{model} {method:?}: {} triangles, {} charts, {} fallbacks, angle {:.4}, area {:.4}, {seconds:.3} s",
             mesh.triangles().len(),
             p.charts.len(),
             p.reports.iter().filter(|r| r.fell_back).count(),
