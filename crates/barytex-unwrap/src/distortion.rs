@@ -9,7 +9,11 @@
 //! - **area distortion** `max(ρ, 1/ρ)` with `ρ = σ1 σ2 · (A_3D / A_uv)`, the triangle's area ratio
 //!   normalized by the chart's total areas — 1 when every triangle keeps its share of the area.
 //!
-//! A chart's figures are the 3-D-area-weighted means and the maxima over its triangles. Both are
+//! - **L2 stretch** `sqrt(Σ A_T (σ1² + σ2²)/2 / Σ A_T)` after scaling the uvs to the surface's
+//!   area — Sander et al.'s `L²` norm (their eq. 3 and §4), 1 for an isometry, growing with both
+//!   kinds of distortion.
+//!
+//! A chart's figures are the 3-D-area-weighted means and the maxima over its triangles. All are
 //! invariant under scaling the uvs, so they compare before and after packing.
 
 use glam::DVec2;
@@ -34,6 +38,8 @@ pub struct ChartStats {
     pub area_distortion_mean: f64,
     /// Largest `max(ρ, 1/ρ)`.
     pub area_distortion_max: f64,
+    /// Sander et al.'s L2 stretch (≥ 1; 1 for an isometry up to scale).
+    pub stretch_l2: f64,
     /// 3-D surface area.
     pub surface_area: f64,
     /// Signed uv area.
@@ -60,6 +66,7 @@ pub struct ChartStats {
 /// };
 /// let s = chart_stats(&mesh, &chart);
 /// assert!((s.angle_distortion_mean - 1.0).abs() < 1e-12); // a uniform scaling is conformal
+/// assert!((s.stretch_l2 - 1.0).abs() < 1e-12); // and, up to scale, an isometry
 /// chart.uvs[2].y = 8.0;
 /// assert!((chart_stats(&mesh, &chart).angle_distortion_max - 4.0).abs() < 1e-12);
 /// ```
@@ -106,7 +113,9 @@ pub fn atlas_stats(mesh: &UnwrapMesh, charts: &[Chart]) -> ChartStats {
     }
     let norm = s.surface_area / s.uv_area;
     let mut weight = 0.0;
+    let mut stretch = 0.0;
     for &(area, (s1, s2), positive) in &per {
+        stretch += area * 0.5 * (s1 * s1 + s2 * s2) * norm;
         let angle = if positive && s2 > 0.0 {
             s1 / s2
         } else {
@@ -127,6 +136,7 @@ pub fn atlas_stats(mesh: &UnwrapMesh, charts: &[Chart]) -> ChartStats {
     if weight > 0.0 {
         s.angle_distortion_mean /= weight;
         s.area_distortion_mean /= weight;
+        s.stretch_l2 = (stretch / weight).sqrt();
     }
     s
 }
