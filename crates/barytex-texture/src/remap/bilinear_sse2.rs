@@ -39,7 +39,7 @@ use crate::{Rgba8, Texture2d};
 /// an index range where `y·w + x` fits the f64 → i32 conversion and `usize` arithmetic.
 pub(super) fn applies(source: &Texture2d<Rgba8>) -> bool {
     let (w, h) = source.size();
-    w >= 2 && w < (1 << 30) && h < (1 << 30)
+    (2..(1 << 30)).contains(&w) && h < (1 << 30)
 }
 
 /// The texel pair `(i, i + 1)` as one little-endian `u64` (texel `i` in the low bytes).
@@ -170,7 +170,8 @@ mod tests {
     fn texture(w: u32, h: u32, seed: u64) -> Texture2d<Rgba8> {
         let mut s = seed;
         Texture2d::from_fn(w, h, |_, _| {
-            Rgba8(next(&mut s).to_le_bytes()[..4].try_into().unwrap())
+            let [r, g, b, a, ..] = next(&mut s).to_le_bytes();
+            Rgba8([r, g, b, a])
         })
         .expect("small")
     }

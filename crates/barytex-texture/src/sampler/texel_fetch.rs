@@ -51,11 +51,10 @@ pub(crate) fn premultiply(c: Vec4) -> Vec4 {
 #[inline]
 pub(crate) fn unpremultiply(c: Vec4) -> Vec4 {
     if c.w > 0.0 {
-        // One 4-lane division (the w lane's α/α is discarded) and a lane-wise finiteness test
-        // (`q − q` is 0 exactly for finite `q`), rather than three scalar divisions and three
-        // scalar tests: the same values.
+        // One 4-lane division (the w lane's α/α is discarded) and one lane-wise finiteness test,
+        // rather than three scalar divisions and three scalar tests: the same values.
         let q = c / c.w;
-        if (q - q).cmpeq(Vec4::ZERO).bitmask() & 0b0111 == 0b0111 {
+        if q.is_finite_mask().bitmask() & 0b0111 == 0b0111 {
             Vec4::new(q.x, q.y, q.z, c.w)
         } else {
             Vec4::new(0.0, 0.0, 0.0, c.w)
