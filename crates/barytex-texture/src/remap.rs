@@ -14,7 +14,8 @@ mod bilinear_sse2;
 /// bottom-right, texel centres at `(x + ½)/w`).
 ///
 /// The blend runs in byte units with f32 weights (no per-texel division, no lookup tables),
-/// and is rounded once per channel; a non-finite coordinate gives transparent black. Colours are
+/// and is rounded once per channel; on x86-64 an SSE2 kernel computes the same bytes, four
+/// channels of a pixel per register; a non-finite coordinate gives transparent black. Colours are
 /// blended as stored, which is exact for opaque images (translucent images: premultiply first or
 /// use [`TextureSampler`](crate::TextureSampler), which filters premultiplied).
 ///
@@ -57,7 +58,7 @@ pub fn remap_bilinear_rgba8(
 
 /// The reference path (every size, every target): one pixel at a time through glam's `Vec4`.
 /// The SSE2 kernel computes bit-identical results (same operations in the same order); the unit
-/// tests of [`bilinear_sse2`] compare the two.
+/// tests of `bilinear_sse2` compare the two.
 fn remap_scalar(source: &Texture2d<Rgba8>, coords: &[Vec2], out: &mut [Rgba8]) {
     let (w, h) = source.size();
     let texels = source.texels();
