@@ -3,7 +3,7 @@
 
 use glam::{Vec2, Vec4};
 
-use crate::sampler::texel_fetch::{Addressing, unpremultiply};
+use crate::sampler::texel_fetch::{Addressing, premultiply, unpremultiply};
 use crate::sampler::{
     AnisotropicFilter, FilterMode, MipmapFilterMode, Sampler, SamplerDescriptor, anisotropic,
     compare, ewa, level_filters, lod,
@@ -245,7 +245,7 @@ impl<T: Texel> TextureSampler<T> {
         match self.path {
             // Level 0 under the one filter whatever the footprint (see `across_levels`).
             LookupPath::SingleLevelNearest => {
-                unpremultiply(level_filters::nearest(&levels[0], uv, &self.addressing))
+                unpremultiply(nearest_inside_first(&levels[0], uv, &self.addressing))
             }
             LookupPath::SingleLevelBilinear => {
                 unpremultiply(level_filters::bilinear(&levels[0], uv, &self.addressing))
@@ -413,6 +413,25 @@ impl<T: Texel> TextureSampler<T> {
 }
 
 /// A non-negative, finite level number as an index clamped to `last`.
+/// [`level_filters::nearest`] with a shortcut for a coordinate inside the texture, the common
+/// case: there `⌊u·w⌋` is the truncation (`u·w ≥ 0`, exact in f64) and every address mode maps an
+/// inside index to itself, so the texel is read directly, without the general saturating floor
+/// and `wrap`. The same texel, so the same value (`tests/lookup_paths.rs` compares this path with
+/// the general one, which keeps `level_filters::nearest`).
+#[inline(always)]
+fn nearest_inside_first<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing) -> Vec4 {
+    let (w, h) = level.size();
+    let (x, y) = (
+        f64::from(uv.x) * f64::from(w),
+        f64::from(uv.y) * f64::from(h),
+    );
+    if x >= 0.0 && x < f64::from(w) && y >= 0.0 && y < f64::from(h) {
+        let (i, j) = (x as u32 as usize, y as u32 as usize);
+        return premultiply(level.texels()[j * w as usize + i].to_linear());
+    }
+    level_filters::nearest(level, uv, a)
+}
+
 /// `x.floor()` without the library call it is on the x86-64 baseline (no SSE4.1): truncation,
 /// corrected below negative non-integers. Identical to `f32::floor` for every f32 (tested).
 #[inline]
