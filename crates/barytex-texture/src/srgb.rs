@@ -6,7 +6,7 @@
 //!   exactly. Checked exhaustively against an f64 evaluation in the tests.
 //! - [`encode`] is correctly rounded for **every** f32: it returns the byte nearest
 //!   `255 · encode_f32(x)` computed exactly (ties cannot occur at f32 inputs). Checked exhaustively
-//!   over the f32 values around each of the 255 decision points.
+//!   over the f32 values around each of the 255 decision points, and over every f32 in [0, 1].
 //! - [`to_linear`] and [`from_linear`] (continuous forms) are within 1 ulp of the exact function
 //!   (evaluated in f64).
 
@@ -61,38 +61,59 @@ pub fn decode(byte: u8) -> f32 {
 #[must_use]
 #[inline]
 pub fn encode(linear: f32) -> u8 {
-    // The byte is the number of thresholds ≤ x. A bucket table gives a lower bound for it in one
-    // lookup; at most two thresholds lie in a bucket, so the loop runs at most twice.
-    if linear.is_nan() || linear <= 0.0 {
-        return 0; // ≤ 0 and NaN
+    // The byte is the number of thresholds ≤ x. For x in [2⁻¹⁴, 1) the f32 bits above the 15 low
+    // mantissa bits name a bucket (an octave cut into 256 equal parts) that holds at most one
+    // threshold (checked when the table is built), so the byte is the bucket's count plus one
+    // comparison. Below 2⁻¹⁴ (< the first threshold, 1.5·10⁻⁴) every x gives 0.
+    let bits = linear.to_bits();
+    let offset = bits.wrapping_sub(LOW_BITS);
+    if offset < ONE_BITS - LOW_BITS {
+        let start = BUCKET_COUNT[(offset >> BUCKET_SHIFT) as usize];
+        return start + u8::from(linear >= THRESHOLDS_PADDED[usize::from(start)]);
     }
-    if linear >= 1.0 {
-        return 255;
-    }
-    // 0 < x < 1, and x·4096 is exact: the floor is the bucket.
-    let mut byte = BUCKET_START[(linear * BUCKETS as f32) as usize];
-    while byte < 255 && linear >= ENCODE_THRESHOLDS[usize::from(byte)] {
-        byte += 1;
-    }
-    byte
+    // Outside [2⁻¹⁴, 1): NaN, ≤ 0 and tiny → 0, ≥ 1 → 255.
+    if linear >= 1.0 { 255 } else { 0 }
 }
 
-/// The number of buckets of [`BUCKET_START`] over [0, 1).
-const BUCKETS: usize = 4096;
+/// The bits of 2⁻¹⁴ (below the first threshold) and of 1.0.
+const LOW_BITS: u32 = 0x3880_0000;
+const ONE_BITS: u32 = 0x3f80_0000;
+/// 23 mantissa bits less the 8 that cut an octave into buckets.
+const BUCKET_SHIFT: u32 = 15;
+const BUCKETS: usize = ((ONE_BITS - LOW_BITS) >> BUCKET_SHIFT) as usize;
 
-/// `BUCKET_START[k]`: the byte that `k / BUCKETS` encodes to — a lower bound for every value in
-/// bucket `k`, since encoding is monotone.
-static BUCKET_START: [u8; BUCKETS] = bucket_starts();
+/// The thresholds with a 256th that no x < 1 reaches, so a bucket past the last threshold
+/// compares against it.
+static THRESHOLDS_PADDED: [f32; 256] = padded_thresholds();
 
-const fn bucket_starts() -> [u8; BUCKETS] {
+const fn padded_thresholds() -> [f32; 256] {
+    let mut t = [2.0_f32; 256];
+    let mut k = 0;
+    while k < 255 {
+        t[k] = ENCODE_THRESHOLDS[k];
+        k += 1;
+    }
+    t
+}
+
+/// `BUCKET_COUNT[k]`: the number of thresholds ≤ the smallest f32 of bucket `k`.
+static BUCKET_COUNT: [u8; BUCKETS] = bucket_counts();
+
+/// Builds the bucket table and checks, at compile time, that no bucket holds two thresholds: the
+/// next threshold after the bucket's start must exceed the bucket's largest f32.
+const fn bucket_counts() -> [u8; BUCKETS] {
+    // Everything below the table encodes to 0.
+    assert!(ENCODE_THRESHOLDS[0] > f32::from_bits(LOW_BITS));
     let mut table = [0_u8; BUCKETS];
     let mut k = 0;
     let mut byte = 0_usize;
     while k < BUCKETS {
-        let x = k as f32 / BUCKETS as f32;
-        while byte < 255 && x >= ENCODE_THRESHOLDS[byte] {
+        let first = f32::from_bits(LOW_BITS + ((k as u32) << BUCKET_SHIFT));
+        let last = f32::from_bits(LOW_BITS + (((k as u32) + 1) << BUCKET_SHIFT) - 1);
+        while byte < 255 && first >= ENCODE_THRESHOLDS[byte] {
             byte += 1;
         }
+        assert!(byte + 1 >= 256 || padded_thresholds()[byte + 1] > last);
         table[k] = byte as u8;
         k += 1;
     }
@@ -188,15 +209,34 @@ mod tests {
             assert_eq!(usize::from(encode(x)), count(x), "x = {x:e}");
             bits += 64;
         }
-        for k in 0..BUCKETS {
-            let x = k as f32 / BUCKETS as f32;
-            for y in [
-                x,
-                f32::from_bits(x.to_bits().saturating_sub(1)),
-                f32::from_bits(x.to_bits() + 1),
-            ] {
-                assert_eq!(usize::from(encode(y)), count(y), "y = {y:e}");
+        // Every bucket's first and last f32 and their neighbours, and the four f32s either side
+        // of every threshold: with at most one threshold per bucket (checked when the table is
+        // built) encode is a step function there, so these cover every place it can change.
+        let mut probes = Vec::new();
+        for k in 0..=BUCKETS as u32 {
+            let first = LOW_BITS + (k << BUCKET_SHIFT);
+            probes.extend([first - 2, first - 1, first, first + 1]);
+        }
+        for t in ENCODE_THRESHOLDS {
+            probes.extend((t.to_bits() - 4)..=(t.to_bits() + 4));
+        }
+        for bits in probes {
+            let y = f32::from_bits(bits);
+            assert_eq!(usize::from(encode(y)), count(y), "y = {y:e}");
+        }
+    }
+
+    /// Every f32 from 0 to 1 (2³⁰ values, about 8 s in the test profile here): the byte against a
+    /// running count of the thresholds passed.
+    #[test]
+    fn encode_equals_counting_thresholds_for_every_f32_in_the_unit_interval() {
+        let mut count = 0_usize;
+        for bits in 0..=1.0_f32.to_bits() {
+            let x = f32::from_bits(bits);
+            while count < 255 && x >= ENCODE_THRESHOLDS[count] {
+                count += 1;
             }
+            assert_eq!(usize::from(encode(x)), count, "x = {x:e}");
         }
     }
 

@@ -10,7 +10,7 @@ use crate::{Texel, Texture2d};
 
 /// The texel containing `uv` (`⌊u·w⌋`, `⌊v·h⌋`).
 #[must_use]
-#[inline]
+#[inline(always)]
 pub(crate) fn nearest<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing) -> Vec4 {
     let (w, h) = level.size();
     fetch(level, nearest_index(uv.x, w), nearest_index(uv.y, h), a)
@@ -20,7 +20,7 @@ pub(crate) fn nearest<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing) 
 /// `a + (b − a)·t`, so a texel centre returns that texel exactly and a constant stays constant
 /// exactly.
 #[must_use]
-#[inline]
+#[inline(always)]
 pub(crate) fn bilinear<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing) -> Vec4 {
     let (w, h) = level.size();
     let tx = linear_taps(uv.x, w);

@@ -3,7 +3,7 @@
 
 use glam::{Vec2, Vec4};
 
-use crate::sampler::texel_fetch::{Addressing, unpremultiply};
+use crate::sampler::texel_fetch::{Addressing, premultiply, unpremultiply};
 use crate::sampler::{
     AnisotropicFilter, FilterMode, MipmapFilterMode, Sampler, SamplerDescriptor, anisotropic,
     compare, ewa, level_filters, lod,
@@ -236,7 +236,7 @@ impl<T: Texel> TextureSampler<T> {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn sample_biased(&self, uv: Vec2, ddx: Vec2, ddy: Vec2, bias: f32) -> Vec4 {
         if !uv.is_finite() {
             return Vec4::ZERO;
@@ -245,7 +245,7 @@ impl<T: Texel> TextureSampler<T> {
         match self.path {
             // Level 0 under the one filter whatever the footprint (see `across_levels`).
             LookupPath::SingleLevelNearest => {
-                unpremultiply(level_filters::nearest(&levels[0], uv, &self.addressing))
+                unpremultiply(nearest_inside_first(&levels[0], uv, &self.addressing))
             }
             LookupPath::SingleLevelBilinear => {
                 unpremultiply(level_filters::bilinear(&levels[0], uv, &self.addressing))
@@ -315,7 +315,7 @@ impl<T: Texel> TextureSampler<T> {
                 filter_level(to_level(level, last), d.min_filter)
             }
             MipmapFilterMode::Linear => {
-                let floor = lod.floor();
+                let floor = floor_f32(lod);
                 let lo = to_level(floor, last);
                 let hi = to_level(floor + 1.0, last);
                 let a = filter_level(lo, d.min_filter);
@@ -413,6 +413,44 @@ impl<T: Texel> TextureSampler<T> {
 }
 
 /// A non-negative, finite level number as an index clamped to `last`.
+/// [`level_filters::nearest`] with a shortcut for a coordinate inside the texture, the common
+/// case: there `⌊u·w⌋` is the truncation (`u·w ≥ 0`, exact in f64) and every address mode maps an
+/// inside index to itself, so the texel is read directly, without the general saturating floor
+/// and `wrap`. The same texel, so the same value (`tests/lookup_paths.rs` compares this path with
+/// the general one, which keeps `level_filters::nearest`).
+#[inline(always)]
+fn nearest_inside_first<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing) -> Vec4 {
+    let (w, h) = level.size();
+    let (x, y) = (
+        f64::from(uv.x) * f64::from(w),
+        f64::from(uv.y) * f64::from(h),
+    );
+    if x >= 0.0 && x < f64::from(w) && y >= 0.0 && y < f64::from(h) {
+        let (i, j) = (x as u32 as usize, y as u32 as usize);
+        return premultiply(level.texels()[j * w as usize + i].to_linear());
+    }
+    level_filters::nearest(level, uv, a)
+}
+
+/// `x.floor()` without the library call it is on the x86-64 baseline (no SSE4.1): truncation,
+/// corrected below negative non-integers. Identical to `f32::floor` for every f32 (tested).
+#[inline]
+fn floor_f32(x: f32) -> f32 {
+    // 2²³: from there on every f32 is an integer (and ±∞, NaN pass through).
+    if x.abs() < 8_388_608.0 {
+        let t = x as i32 as f32;
+        if t == x {
+            x // keeps −0.0
+        } else if t > x {
+            t - 1.0
+        } else {
+            t
+        }
+    } else {
+        x
+    }
+}
+
 fn to_level(level: f32, last: usize) -> usize {
     if level >= last as f32 {
         last
@@ -433,5 +471,42 @@ impl<T: Texel> Sampler for TextureSampler<T> {
             return Vec4::ZERO;
         }
         unpremultiply(self.filter_premultiplied(uv, self.clamp_lod(lod)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::floor_f32;
+
+    #[test]
+    fn floor_f32_is_the_library_floor_bit_for_bit() {
+        let check = |x: f32| {
+            let (got, want) = (floor_f32(x), x.floor());
+            assert!(
+                got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()),
+                "{x:e}: {got:e} vs {want:e}"
+            );
+        };
+        // A stride through every bit pattern (both signs, subnormals, ±∞, NaN payloads)...
+        for bits in (0..=u32::MAX).step_by(97) {
+            check(f32::from_bits(bits));
+        }
+        // ...and every f32 next to the integers where the floor changes, and near 2²³.
+        for i in -300_i32..300 {
+            let x = i as f32;
+            for d in -3_i32..=3 {
+                check(f32::from_bits((x.to_bits() as i32 + d) as u32));
+            }
+        }
+        for x in [
+            0.0,
+            -0.0,
+            8_388_607.5,
+            -8_388_607.5,
+            8_388_608.0,
+            -8_388_609.0,
+        ] {
+            check(x);
+        }
     }
 }
