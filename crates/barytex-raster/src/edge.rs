@@ -220,6 +220,11 @@ impl EdgeSetup {
                     }
                     continue;
                 }
+                // An edge that holds over the whole row bounds nothing (most rows of a
+                // triangle meet two of its edges, not three).
+                if (s > 0 && inside(lo)) || (s < 0 && inside(hi - 1)) {
+                    continue;
+                }
                 // The offset where the edge crosses `bias`, estimated (the cast saturates),
                 // then moved to the exact boundary.
                 let mut k = ((bias - e0) as f64 * inv_step[i]) as i64;
