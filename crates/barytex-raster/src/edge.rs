@@ -36,9 +36,25 @@ pub(crate) struct EdgeSetup {
     pub(crate) bbox: [i64; 4],
 }
 
-/// Rounds a screen coordinate to fixed point.
+/// Rounds a screen coordinate to fixed point (to nearest, halves away from zero).
 pub(crate) fn fixed(v: f32) -> i64 {
-    (f64::from(v) * ONE as f64).round() as i64
+    let x = f64::from(v) * ONE as f64;
+    // `f64::round` is a library call on targets without SSE4.1 (six per triangle). Below 2⁵²
+    // the truncation is exact and so is the remainder `x − t`, so comparing it with ½ rounds
+    // exactly as `round` does.
+    if x.abs() < 4_503_599_627_370_496.0 {
+        let t = x as i64;
+        let rest = x - t as f64;
+        if rest >= 0.5 {
+            t + 1
+        } else if rest <= -0.5 {
+            t - 1
+        } else {
+            t
+        }
+    } else {
+        x.round() as i64
+    }
 }
 
 impl EdgeSetup {
@@ -291,8 +307,8 @@ impl EdgeSetup {
     }
 
     /// Calls `covered(x, y, λ)` for every pixel of `rect` (`[x0, x1) × [y0, y1)`) whose centre
-    /// the triangle covers, row by row within blocks, with the screen-space barycentrics `λ` of
-    /// the centre over the **input** vertex order.
+    /// the triangle covers, row by row over exact spans, with the screen-space barycentrics `λ`
+    /// of the centre over the **input** vertex order.
     #[inline]
     pub(crate) fn for_each_covered(
         &self,
@@ -351,6 +367,36 @@ mod tests {
     }
 
     #[test]
+    fn fixed_rounds_as_round_does() {
+        let mut next = stream(0x2545_F491_4F6C_DD1D);
+        let mut values: Vec<f32> = vec![
+            0.0,
+            -0.0,
+            0.5 / 256.0,
+            -0.5 / 256.0,
+            1.5 / 256.0,
+            -2.5 / 256.0,
+            MAX_COORDINATE,
+            -MAX_COORDINATE,
+            f32::MAX,
+            f32::MIN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+        ];
+        // Random bit patterns (every exponent) and random halves of the sub-pixel grid.
+        for _ in 0..200_000 {
+            let r = next();
+            values.push(f32::from_bits(r as u32));
+            values.push(((r >> 32) as i32 >> 8) as f32 / 512.0);
+        }
+        for v in values {
+            let expected = (f64::from(v) * ONE as f64).round() as i64;
+            assert_eq!(fixed(v), expected, "{v:e}");
+        }
+    }
+
+    #[test]
     fn spans_are_exactly_the_covered_centres() {
         let mut next = stream(0x9E37_79B9_7F4A_7C15);
         let mut checked = 0;
@@ -388,8 +434,8 @@ mod tests {
                 assert!(xs < xe, "empty span reported");
                 for x in xs..xe {
                     spans.push((x, y, e));
-                    for i in 0..3 {
-                        e[i] += edge.a[i] * ONE;
+                    for (value, a) in e.iter_mut().zip(edge.a) {
+                        *value += a * ONE;
                     }
                 }
             });
