@@ -20,9 +20,11 @@ trilinearly (barytex `--filter trilinear`; OpenGL LINEAR_MIPMAP_LINEAR after glG
 with the view and projection barytex prints (`--print-camera`, automatic camera).
 
 - barytex: `barytex render FILE --shading unlit --filter trilinear --aa none --threads T --stats`,
-  one process per run; the frame is the draw (`raster` + `shade` of the `stages:` line: the
-  framebuffer, rasterization and shading into barytex's float target). Load, PNG decode, mips and
-  encode + write are reported apart. Median over N runs.
+  one process per run; the frame is the draw (`raster` + `shade` of the `stages:` line:
+  rasterization and shading into barytex's float target, cleared). Load, PNG decode, mips, the
+  target's creation (`target`: allocation and the first clear, which touches fresh pages; llvmpipe
+  creates its framebuffer with the context, outside its frames) and encode + write are reported
+  apart. Median over N runs.
 - llvmpipe: one subprocess per thread count and round, LP_NUM_THREADS=T set before the context exists;
   scene upload and mip generation are timed apart (each followed by glFinish); the frame is
   clear + draws + glFinish + glReadPixels into memory, median of N frames after warm-up frames.
@@ -497,7 +499,8 @@ def main():
     for r in rows:
         st = r["bx_stages"]
         print(f"  {r['scene']}, {r['threads']} thr: barytex load {st.get('load', 0):.1f}, decode "
-              f"{st.get('decode', 0):.1f}, mips {st.get('mips', 0):.1f}, encode + write "
+              f"{st.get('decode', 0):.1f}, mips {st.get('mips', 0):.1f}, target {st.get('target', 0):.1f}, "
+              "encode + write "
               f"{st.get('encode + write', 0):.1f}; llvmpipe upload {r['gl_upload']:.1f}, glGenerateMipmap "
               f"{r['gl_mips']:.1f}, PNG decode (Pillow) {r['gl_decode']:.1f}")
     print(f"\nglGenerateMipmap on sRGB: level 1 of black|white = {mips['level1']} "
@@ -564,7 +567,8 @@ def write_markdown(path, rows, threads, table, command, version, renderer, size,
     ] if len(threads) > 1 else []) + [
         "Outside the frames (medians, ms): " + "; ".join(
             f"{r['scene']} ({r['threads']} thr) barytex load {r['bx_stages'].get('load', 0):.1f}, decode "
-            f"{r['bx_stages'].get('decode', 0):.1f}, mips {r['bx_stages'].get('mips', 0):.1f}, encode + write "
+            f"{r['bx_stages'].get('decode', 0):.1f}, mips {r['bx_stages'].get('mips', 0):.1f}, target "
+            f"{r['bx_stages'].get('target', 0):.1f}, encode + write "
             f"{r['bx_stages'].get('encode + write', 0):.1f}, llvmpipe upload {r['gl_upload']:.1f}, "
             f"glGenerateMipmap {r['gl_mips']:.1f}" for r in rows) + ".",
         "",
@@ -572,9 +576,10 @@ def write_markdown(path, rows, threads, table, command, version, renderer, size,
         "ratios are indicative, not exact. llvmpipe's LP_NUM_THREADS counts rasterizer threads; "
         "vertex processing and setup run on the calling thread besides them. The barytex frame "
         "excludes the encode to 8 bits (reported apart); the llvmpipe frame includes the write "
-        "to its target and the readback. Each barytex frame is the only one of its process (fresh "
-        "framebuffer pages every run: the CLI draws one frame); llvmpipe's are warm frames reusing "
-        "its framebuffer and compiled shaders. Mips differ: barytex filters premultiplied alpha in linear "
+        "to its target and the readback. Each barytex frame is the only one of its process: the "
+        "target's creation (allocation, and the clear that first touches its pages) is reported "
+        "apart as `target`, as llvmpipe creates its framebuffer with the context; llvmpipe's frames "
+        "are warm frames reusing its framebuffer and compiled shaders and include a clear. Mips differ: barytex filters premultiplied alpha in linear "
         "light, correctly rounded; glGenerateMipmap on this driver averages "
         + ("in linear light" if mips["linear_light"] else "the stored sRGB bytes (not linear light)")
         + f" (level 1 of black|white: {mips['level1']}) with straight alpha (the scenes here are opaque). "

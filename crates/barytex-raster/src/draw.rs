@@ -7,7 +7,7 @@ use glam::Vec4;
 use rayon::prelude::*;
 
 use crate::Shader;
-use crate::assemble::assemble;
+use crate::assemble::{Piece, assemble};
 use crate::state::{PipelineState, Viewport};
 use crate::target::{Framebuffer, TILE};
 use crate::tile::{TileTarget, shade_piece};
@@ -60,6 +60,38 @@ impl core::ops::AddAssign<&DrawStats> for DrawStats {
         self.fragments_discarded += other.fragments_discarded;
         self.fragments_depth_failed += other.fragments_depth_failed;
     }
+}
+
+/// Triangles per parallel job of primitive assembly: enough that a job outweighs its
+/// scheduling, few enough that two threads share a mesh of a few thousand triangles.
+const ASSEMBLY_CHUNK: usize = 512;
+
+/// [`assemble`] over chunks of triangles in parallel, the pieces concatenated in submission
+/// order (so the result, and everything drawn from it, does not depend on the thread count).
+fn assemble_parallel<V: Copy + Send + Sync>(
+    shaded: &[(Vec4, V)],
+    indices: &[u32],
+    state: &PipelineState,
+    viewport: Viewport,
+    stats: &mut DrawStats,
+) -> Vec<Piece<V>> {
+    if indices.len() <= 3 * ASSEMBLY_CHUNK {
+        return assemble(shaded, indices, state, viewport, stats);
+    }
+    let chunks: Vec<(Vec<Piece<V>>, DrawStats)> = indices
+        .par_chunks(3 * ASSEMBLY_CHUNK)
+        .map(|chunk| {
+            let mut chunk_stats = DrawStats::default();
+            let pieces = assemble(shaded, chunk, state, viewport, &mut chunk_stats);
+            (pieces, chunk_stats)
+        })
+        .collect();
+    let mut pieces = Vec::with_capacity(chunks.iter().map(|(p, _)| p.len()).sum());
+    for (chunk, chunk_stats) in chunks {
+        pieces.extend(chunk);
+        *stats += &chunk_stats;
+    }
+    pieces
 }
 
 /// The rectangle `[x0, y0, x1, y1)` that a draw may write: target ∩ viewport ∩ scissor.
@@ -145,7 +177,7 @@ pub fn draw<S: Shader>(
     let viewport = state
         .viewport
         .unwrap_or_else(|| Viewport::full(target.width(), target.height()));
-    let pieces = assemble(&shaded, indices, state, viewport, &mut stats);
+    let pieces = assemble_parallel(&shaded, indices, state, viewport, &mut stats);
     let rect = writable_rect(target, state, viewport);
     if rect[0] >= rect[2] || rect[1] >= rect[3] || pieces.is_empty() {
         return stats;

@@ -8,7 +8,7 @@
 use barytex_texture::{Limits, Rgba32f, Srgba8, Texel, Texture2d, TextureError};
 use glam::Vec4;
 
-use crate::error::{RasterError, TargetLimits, try_filled};
+use crate::error::{RasterError, TargetLimits, try_filled, try_filled_parallel};
 use crate::samples::SamplePattern;
 
 /// Tile side in pixels: the unit of parallel work and of the buffers' layout.
@@ -111,8 +111,8 @@ impl Framebuffer {
         // The bytes fit a usize, so the sample count does.
         let (n, bytes) = (n.unwrap_or(0) as usize, bytes.unwrap_or(0));
         let out_of_memory = |_| RasterError::OutOfMemory { bytes };
-        let color = try_filled(n, premultiply(clear)).map_err(out_of_memory)?;
-        let depth = try_filled(n, 1.0_f32).map_err(out_of_memory)?;
+        let color = try_filled_parallel(n, premultiply(clear)).map_err(out_of_memory)?;
+        let depth = try_filled_parallel(n, 1.0_f32).map_err(out_of_memory)?;
         Ok(Self {
             width,
             height,
@@ -209,8 +209,15 @@ impl Framebuffer {
     /// # Ok::<(), barytex_raster::RasterError>(())
     /// ```
     pub fn clear(&mut self, color: Vec4) {
-        self.color.fill(premultiply(color));
-        self.depth.fill(1.0);
+        use rayon::prelude::*;
+        let color = premultiply(color);
+        // In tiles, in parallel on the current rayon pool.
+        self.color
+            .par_chunks_mut((TILE * TILE) as usize)
+            .for_each(|c| c.fill(color));
+        self.depth
+            .par_chunks_mut((TILE * TILE) as usize)
+            .for_each(|d| d.fill(1.0));
     }
 
     /// Restricts writes to the pixels where `keep(x, y)` holds (a stencil-like mask: masked
@@ -357,6 +364,7 @@ impl Framebuffer {
     }
 }
 
+#[inline]
 pub(crate) fn premultiply(c: Vec4) -> Vec4 {
     (c.truncate() * c.w).extend(c.w)
 }

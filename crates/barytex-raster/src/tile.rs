@@ -7,7 +7,7 @@ use glam::{UVec2, Vec4};
 use crate::assemble::Piece;
 use crate::draw::DrawStats;
 use crate::samples::SamplePattern;
-use crate::state::{Blend, Interpolation, PipelineState};
+use crate::state::{Blend, DepthCompare, Interpolation, PipelineState};
 use crate::target::{TILE, premultiply};
 use crate::{Fragment, Shader};
 
@@ -72,11 +72,130 @@ fn shade_single<S: Shader>(
     tile: &mut TileTarget<'_>,
     stats: &mut DrawStats,
 ) {
+    if let Interpolation::AffineSpans { span } = state.interpolation {
+        shade_spans(
+            piece,
+            shader,
+            state,
+            tile,
+            stats,
+            i64::from(span.clamp(2, 256)),
+        );
+        return;
+    }
+    // The depth test and the blend resolved once per piece, not per pixel: the common cases
+    // get their own loop (the comparison a single instruction, the blend a store).
+    match (state.depth_compare, state.blend) {
+        (Some(DepthCompare::Less), Blend::Replace) => {
+            shade_centres::<S, _, false>(piece, shader, state, tile, stats, |z, s| z < s);
+        }
+        (Some(DepthCompare::LessEqual), Blend::Replace) => {
+            shade_centres::<S, _, false>(piece, shader, state, tile, stats, |z, s| z <= s);
+        }
+        (Some(DepthCompare::Less), Blend::Over) => {
+            shade_centres::<S, _, true>(piece, shader, state, tile, stats, |z, s| z < s);
+        }
+        (op, Blend::Replace) => {
+            let test = |z, s| op.is_none_or(|op: DepthCompare| op.passes(z, s));
+            shade_centres::<S, _, false>(piece, shader, state, tile, stats, test);
+        }
+        (op, Blend::Over) => {
+            let test = |z, s| op.is_none_or(|op: DepthCompare| op.passes(z, s));
+            shade_centres::<S, _, true>(piece, shader, state, tile, stats, test);
+        }
+    }
+}
+
+/// The covered pixel centres of a piece: depth test `passes(fragment, stored)`, the fragment
+/// stage, then replace (`OVER` false) or "over" blending. Perspective-correct or affine
+/// weights; the results are those of [`blend`] and [`DepthCompare::passes`] pixel by pixel.
+#[inline]
+fn shade_centres<S: Shader, T: Fn(f32, f32) -> bool, const OVER: bool>(
+    piece: &Piece<S::Varying>,
+    shader: &S,
+    state: &PipelineState,
+    tile: &mut TileTarget<'_>,
+    stats: &mut DrawStats,
+    passes: T,
+) {
     let context = &piece.context;
-    let span = match state.interpolation {
-        Interpolation::AffineSpans { span } => Some(i64::from(span.clamp(2, 256))),
-        _ => None,
-    };
+    let depths = piece.depth;
+    let inv_area = piece.edge.inv_area();
+    let (ox, oy) = tile.origin;
+    let mask = tile.mask;
+    let depth_write = state.depth_write;
+    let front_facing = piece.front;
+    let color = &mut *tile.color;
+    let depth = &mut *tile.depth;
+    let (mut shaded, mut discarded, mut failed) = (0_u64, 0_u64, 0_u64);
+    let step = piece.edge.x_step();
+    piece
+        .edge
+        .for_each_covered_span(tile.rect, |y, (xs, xe), mut e| {
+            // The span's slices of the tile's rows: no bounds check per pixel.
+            let start = ((y - oy) * i64::from(TILE) + (xs - ox)) as usize;
+            let end = start + (xe - xs) as usize;
+            let keep = mask.map(|m| &m[start..end]);
+            let pixels = color[start..end].iter_mut().zip(&mut depth[start..end]);
+            for (k, (color, stored)) in pixels.enumerate() {
+                // Edge j is opposite input vertex j: its value is that vertex's weight.
+                let lambda = [
+                    e[0] as f64 * inv_area,
+                    e[1] as f64 * inv_area,
+                    e[2] as f64 * inv_area,
+                ];
+                for i in 0..3 {
+                    e[i] += step[i];
+                }
+                if keep.is_some_and(|keep| !keep[k]) {
+                    continue;
+                }
+                let z = (0..3).map(|i| lambda[i] * depths[i]).sum::<f64>() as f32;
+                if !passes(z, *stored) {
+                    failed += 1;
+                    continue;
+                }
+                let weights = context.weights(lambda);
+                let fragment = Fragment {
+                    varying: S::Varying::combine3(context.varyings, context.input_weights(weights)),
+                    depth: z,
+                    pixel: UVec2::new((xs + k as i64) as u32, y as u32),
+                    front_facing,
+                    coverage: 1,
+                    lambda,
+                    piece: context,
+                };
+                shaded += 1;
+                let Some(c) = shader.fragment(&fragment) else {
+                    discarded += 1;
+                    continue;
+                };
+                let src = premultiply(c);
+                *color = if OVER {
+                    src + *color * (1.0 - src.w)
+                } else {
+                    src
+                };
+                if depth_write {
+                    *stored = z;
+                }
+            }
+        });
+    stats.fragments_shaded += shaded;
+    stats.fragments_discarded += discarded;
+    stats.fragments_depth_failed += failed;
+}
+
+/// One sample per pixel with affine spans ([`Interpolation::AffineSpans`]).
+fn shade_spans<S: Shader>(
+    piece: &Piece<S::Varying>,
+    shader: &S,
+    state: &PipelineState,
+    tile: &mut TileTarget<'_>,
+    stats: &mut DrawStats,
+    span: i64,
+) {
+    let context = &piece.context;
     let mut cache = SpanCache {
         row: i64::MIN,
         start: 0,
@@ -98,10 +217,7 @@ fn shade_single<S: Shader>(
             stats.fragments_depth_failed += 1;
             return;
         }
-        let weights = match span {
-            None => context.weights(lambda),
-            Some(span) => span_weights(context, &mut cache, span, x, y, lambda),
-        };
+        let weights = span_weights(context, &mut cache, span, x, y, lambda);
         let fragment = Fragment {
             varying: S::Varying::combine3(context.varyings, context.input_weights(weights)),
             depth: z,

@@ -47,8 +47,14 @@ pub struct RenderStats {
     /// Of `prepare_seconds`, those preparing the textures (copies and mip chains, several
     /// textures in parallel): wall time.
     pub mip_seconds: f64,
-    /// Seconds rasterizing and shading (the two are interleaved per pixel).
+    /// Seconds rasterizing and shading (the two are interleaved per pixel), without creating
+    /// the target ([`target_seconds`](Self::target_seconds)).
     pub draw_seconds: f64,
+    /// Seconds creating the render target of a single-pass anti-aliasing mode (none, MSAA,
+    /// supersampling up to 5 × 5): its allocation and the clear that first touches every page
+    /// (20 bytes per sample). Accumulated and adaptive supersampling create their targets
+    /// inside the draw, which counts them.
+    pub target_seconds: f64,
     /// With [`RenderOptions::measure_stages`](crate::RenderOptions::measure_stages): seconds the
     /// same passes took with a fragment shader that returns a constant (vertex stage, clipping,
     /// coverage, depth test, interpolation of the varyings, writes). `draw_seconds` minus this is
@@ -97,6 +103,7 @@ impl RenderStats {
             prepare_seconds: prepared.seconds,
             mip_seconds: prepared.textures.mip_seconds,
             draw_seconds: drawn.draw_seconds,
+            target_seconds: drawn.target_seconds,
             raster_seconds: drawn.raster_seconds,
             portal_views: drawn.portal_views.drawn,
             portal_draw: drawn.portal_views.draw,

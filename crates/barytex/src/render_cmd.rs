@@ -302,8 +302,9 @@ fn print_stats(rendered: &Rendered, scene: &Scene, portal_depth: u32) {
     }
 }
 
-/// `stages: …`, the time of each stage in milliseconds. Rasterization and shading are told
-/// apart only when the render measured them (`--stats`).
+/// `stages: …`, the time of each stage in milliseconds. `target` is the render target's
+/// creation (allocation and first clear); rasterization and shading are told apart only when
+/// the render measured them (`--stats`).
 fn stage_line(load: f64, decode: f64, s: &RenderStats, save: f64) -> String {
     let ms = |seconds: f64| format!("{:.1} ms", seconds * 1e3);
     let draw = match s.raster_seconds {
@@ -315,11 +316,12 @@ fn stage_line(load: f64, decode: f64, s: &RenderStats, save: f64) -> String {
         None => format!("raster + shade {}", ms(s.draw_seconds)),
     };
     format!(
-        "stages: load {}, decode {}, prepare {}, mips {}, {draw}, encode + write {}",
+        "stages: load {}, decode {}, prepare {}, mips {}, target {}, {draw}, encode + write {}",
         ms(load - decode),
         ms(decode),
         ms(s.prepare_seconds - s.mip_seconds),
         ms(s.mip_seconds),
+        ms(s.target_seconds),
         ms(save)
     )
 }

@@ -43,6 +43,7 @@ fn every_stage_is_timed() {
         "decode ",
         "prepare ",
         "mips ",
+        "target ",
         "raster + shade ",
         "encode + write ",
     ] {
