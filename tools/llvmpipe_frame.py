@@ -165,7 +165,7 @@ def parse_matrices(text):
         if title not in text:
             raise ValueError(f"no `{title}…` block in barytex's --print-camera output")
         lines = text.split(title, 1)[1].splitlines()[1:5]
-        out[key] = np.array([[float(v) for v in re.findall(r"-?\d+\.\d+(?:e-?\d+)?", l)] for l in lines])
+        out[key] = np.array([[float(v) for v in re.findall(r"-?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?", l)] for l in lines])
         if out[key].shape != (4, 4):
             raise ValueError(f"could not read the {key} matrix")
     return out["view"], out["projection"]
