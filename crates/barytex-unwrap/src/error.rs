@@ -29,6 +29,8 @@ pub enum UnwrapError {
         /// The limit.
         limit: u64,
     },
+    /// The charts could not be packed.
+    Pack(crate::pack::PackError),
 }
 
 impl fmt::Display for UnwrapError {
@@ -48,6 +50,7 @@ impl fmt::Display for UnwrapError {
                 requested,
                 limit,
             } => write!(f, "{what}: {requested} exceeds the limit {limit}"),
+            Self::Pack(e) => write!(f, "packing: {e}"),
         }
     }
 }

@@ -15,10 +15,16 @@
 //! - J. R. Shewchuk, "Adaptive precision floating-point arithmetic and fast robust geometric
 //!   predicates", *Discrete & Computational Geometry* 18(3), 1997 (the exact `orient2d`).
 
+mod atlas;
 mod chart;
 mod error;
 mod mesh;
+pub mod overlap;
+pub mod pack;
 
+pub use atlas::{
+    Atlas, AtlasCheck, MIN_ASPECT, Method, StageTimes, UnwrapOptions, check_atlas, unwrap,
+};
 pub use chart::Chart;
 pub use error::UnwrapError;
 pub use mesh::{MAX_TRIANGLES, MAX_VERTICES, UnwrapMesh};
