@@ -490,16 +490,24 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
             .iter_mut()
             .flat_map(|r| std::mem::take(&mut r.new_primitives))
             .collect();
-        let bin = gltf_write::write(
+        let roots = match &options.source {
+            Source::File { allowed_roots, .. } => allowed_roots.clone(),
+            Source::Mesh(_) => Vec::new(),
+        };
+        let (bin, copied) = gltf_write::write(
             doc.clone(),
             glb_bin.as_deref(),
             &model_dir,
+            &roots,
             &out_file,
             uv_set,
             &all,
         )?;
         written.push(out.display().to_string());
         written.push(bin.display().to_string());
+        if !copied.is_empty() {
+            written.push(format!("{} referenced files copied beside it", copied.len()));
+        }
         times.insert("write", t.elapsed().as_secs_f64());
     }
     // The layout pictures.

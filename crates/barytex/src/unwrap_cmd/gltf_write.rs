@@ -6,9 +6,9 @@
 //! Everything else of the document stays as it was (materials, textures, samplers, nodes,
 //! cameras, animations, extensions): the original accessors and buffers are kept, so whatever
 //! else points at them still finds them. A GLB's binary chunk is written out as the start of the
-//! new `.bin` (its buffer 0), since a `.gltf` cannot embed it.
+//! new `<stem>-uv.bin` (its buffer 0), since a `.gltf` cannot embed it.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use barytex_gltf::Primitive;
 use glam::Vec2;
@@ -133,42 +133,66 @@ fn push_all(doc: &mut Map<String, Value>, key: &str, items: Vec<Value>) {
     }
 }
 
-/// Rebases the relative `uri` of every element of `doc[key]`.
-fn rebase_uris(doc: &mut Value, key: &str, model_dir: &Path, out_dir: &Path) {
+/// Rebases the relative `uri` of every element of `doc[key]`, collecting the copies to make.
+fn rebase_uris(
+    doc: &mut Value,
+    key: &str,
+    dirs: (&Path, &Path, &[PathBuf]),
+    copies: &mut Vec<(PathBuf, PathBuf)>,
+) -> Result<(), String> {
+    let (model_dir, out_dir, roots) = dirs;
     if let Some(list) = doc.get_mut(key).and_then(Value::as_array_mut) {
-        for item in list {
-            let new = item
-                .get("uri")
-                .and_then(Value::as_str)
-                .and_then(|u| uri::rebase(u, model_dir, out_dir));
-            if let Some(new) = new {
-                item["uri"] = Value::String(new);
+        for (i, item) in list.iter_mut().enumerate() {
+            let Some(old) = item.get("uri").and_then(Value::as_str) else {
+                continue;
+            };
+            let placed = uri::place(old, model_dir, out_dir, roots)
+                .map_err(|e| format!("/{key}/{i}/uri: {e}"))?;
+            if let Some(placed) = placed {
+                item["uri"] = Value::String(placed.uri);
+                copies.extend(placed.copy);
             }
         }
     }
+    Ok(())
 }
 
-/// Writes `out` (a `.gltf`) and its `.bin`; returns the `.bin`'s path. `model_dir` and the
-/// output's folder must be absolute.
+/// Writes `out` (a `.gltf`) and its `.bin`, and copies the files it references that its folder
+/// cannot reach (see [`uri::place`]); returns the `.bin`'s path and the copies. `model_dir` and
+/// the output's folder must be absolute and canonical; `roots` are the `--allow-dir` folders.
 pub(crate) fn write(
     mut doc: Value,
     glb_bin: Option<&[u8]>,
     model_dir: &Path,
+    roots: &[PathBuf],
     out: &Path,
     uv_set: u32,
     primitives: &[NewPrimitive<'_>],
-) -> Result<std::path::PathBuf, String> {
+) -> Result<(PathBuf, Vec<PathBuf>), String> {
     if !doc.is_object() {
         return Err("the glTF JSON is not an object".to_owned());
     }
     let out_dir = out.parent().unwrap_or_else(|| Path::new("."));
-    rebase_uris(&mut doc, "buffers", model_dir, out_dir);
-    rebase_uris(&mut doc, "images", model_dir, out_dir);
+    let mut copies = Vec::new();
+    for key in ["buffers", "images"] {
+        rebase_uris(&mut doc, key, (model_dir, out_dir, roots), &mut copies)?;
+    }
     let stem = out
         .file_stem()
         .map_or_else(|| "unwrapped".into(), |s| s.to_string_lossy().into_owned());
-    let bin_path = out_dir.join(format!("{stem}.bin"));
-    let bin_uri = uri::encode(Path::new(&format!("{stem}.bin")));
+    let bin_name = format!("{stem}-uv.bin");
+    let bin_path = out_dir.join(&bin_name);
+    let bin_uri = uri::encode(Path::new(&bin_name));
+    let clash = doc
+        .get("buffers")
+        .and_then(Value::as_array)
+        .is_some_and(|b| b.iter().any(|b| b.get("uri").and_then(Value::as_str) == Some(&bin_uri)));
+    if clash {
+        return Err(format!(
+            "{}: the model already uses a buffer of that name; choose another -o",
+            bin_path.display()
+        ));
+    }
     // A GLB's binary chunk is buffer 0 (glTF 2.0 §4.4.3.3): it starts the new .bin, which
     // becomes that buffer's file; otherwise the new .bin is a new buffer.
     let glb_buffer = glb_bin.is_some()
@@ -294,8 +318,19 @@ pub(crate) fn write(
     }
     let text = serde_json::to_string_pretty(&doc).map_err(|e| format!("JSON: {e}"))?;
     std::fs::write(&bin_path, &bin).map_err(|e| format!("{}: {e}", bin_path.display()))?;
+    let mut copied = Vec::new();
+    for (from, to) in copies {
+        if std::fs::canonicalize(&to).is_ok_and(|t| t == from) {
+            continue;
+        }
+        if let Some(parent) = to.parent() {
+            std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
+        }
+        std::fs::copy(&from, &to).map_err(|e| format!("{}: {e}", to.display()))?;
+        copied.push(to);
+    }
     std::fs::write(out, text).map_err(|e| format!("{}: {e}", out.display()))?;
-    Ok(bin_path)
+    Ok((bin_path, copied))
 }
 
 fn to_arrays<T, const N: usize>(values: &[T], f: impl Fn(&T) -> [f32; N]) -> Vec<[f32; N]> {

@@ -1,6 +1,8 @@
-//! Relative URIs of a model moved to another folder: a file the model names relative to its
-//! own folder is named relative to the output's folder instead (RFC 3986 §4.2 relative
-//! references, percent-encoded per §2.1). Nothing is read: only names change.
+//! Relative URIs of a model written to another folder (RFC 3986 §4.2 relative references,
+//! percent-encoded per §2.1): a file the output's folder can reach downwards is named relative
+//! to it; any other is copied beside the output (keeping its path below the model's folder),
+//! so that the output loads under the loader's default confinement (its own folder only). A
+//! file is copied only from the model's folder or a folder `--allow-dir` names.
 
 use std::path::{Component, Path, PathBuf};
 
@@ -55,6 +57,61 @@ pub(crate) fn encode(path: &Path) -> String {
         })
         .collect::<Vec<_>>()
         .join("/")
+}
+
+/// Where a referenced file goes: its new URI, and the copy to make (from, to), if any.
+#[derive(Debug, PartialEq)]
+pub(crate) struct Placed {
+    pub(crate) uri: String,
+    pub(crate) copy: Option<(PathBuf, PathBuf)>,
+}
+
+/// Places the file `uri` of a model in `model_dir` for a model in `out_dir` (both absolute and
+/// canonical): `Ok(None)` for a URI that is not a relative file reference (`data:`, a scheme,
+/// an absolute path), which stays as it is.
+///
+/// # Errors
+/// A file to copy that is not under `model_dir` or one of `roots` after resolving links, or that
+/// cannot be resolved.
+pub(crate) fn place(
+    uri: &str,
+    model_dir: &Path,
+    out_dir: &Path,
+    roots: &[PathBuf],
+) -> Result<Option<Placed>, String> {
+    let Some(rebased) = rebase(uri, model_dir, out_dir) else {
+        return Ok(None);
+    };
+    if !rebased.starts_with("../") && rebased != ".." {
+        return Ok(Some(Placed {
+            uri: rebased,
+            copy: None,
+        }));
+    }
+    let path = uri.split(['?', '#']).next().unwrap_or(uri);
+    let decoded = percent_decode_str(path)
+        .decode_utf8()
+        .map_err(|_| "a URI that is not UTF-8 once decoded".to_owned())?;
+    let target = normalize(&model_dir.join(decoded.as_ref()));
+    let mut below = relative(model_dir, &target);
+    if below.components().next() == Some(Component::ParentDir) {
+        below = PathBuf::from(target.file_name().ok_or("a URI naming a folder")?);
+    }
+    let real = std::fs::canonicalize(&target)
+        .map_err(|e| format!("a referenced file ({}): {e}", below.display()))?;
+    let inside = std::iter::once(model_dir)
+        .chain(roots.iter().map(PathBuf::as_path))
+        .any(|root| std::fs::canonicalize(root).is_ok_and(|r| real.starts_with(r)));
+    if !inside {
+        return Err(format!(
+            "a referenced file ({}) is outside the model's folder and the --allow-dir folders",
+            below.display()
+        ));
+    }
+    Ok(Some(Placed {
+        uri: encode(&below),
+        copy: Some((real, out_dir.join(&below))),
+    }))
 }
 
 /// The URI `uri` of a model in `model_dir` rewritten for a model in `out_dir` (both absolute):
