@@ -112,6 +112,12 @@ impl LayoutStats {
     /// The figures as one JSON object (for tools/xatlas_unwrap.py).
     pub(crate) fn to_json(&self) -> serde_json::Value {
         let d = self.distortion;
+        // JSON has no infinity: a degenerate uv triangle's distortion is written "inf".
+        let num = |x: Option<f64>| match x {
+            Some(v) if v.is_finite() => serde_json::json!(v),
+            Some(_) => serde_json::json!("inf"),
+            None => serde_json::Value::Null,
+        };
         serde_json::json!({
             "triangles": self.triangles,
             "charts": self.charts,
@@ -120,10 +126,10 @@ impl LayoutStats {
             "overlaps_within_charts": self.overlaps_within,
             "outside": self.outside,
             "efficiency": self.efficiency,
-            "angle_mean": d.map(|d| d.angle_mean),
-            "angle_max": d.map(|d| d.angle_max),
-            "area_mean": d.map(|d| d.area_mean),
-            "area_max": d.map(|d| d.area_max),
+            "angle_mean": num(d.map(|d| d.angle_mean)),
+            "angle_max": num(d.map(|d| d.angle_max)),
+            "area_mean": num(d.map(|d| d.area_mean)),
+            "area_max": num(d.map(|d| d.area_max)),
         })
     }
 
