@@ -84,7 +84,10 @@ fn unwrap_and_check(model: &Path, dir: &Path, extra: &[&str]) {
     let each: Vec<u32> = (0..after.triangles.len() as u32).collect();
     let overlaps = find_overlaps(&uv, &after.triangles, &each);
     assert!(overlaps.is_clean(), "{overlaps:?}");
-    assert!(overlaps.pairs_tested > 0);
+    if extra.is_empty() {
+        // Pairs: the two triangles of a chart share an edge, so their boxes meet and are tested.
+        assert!(overlaps.pairs_tested > 0);
+    }
     for t in &after.triangles {
         let [a, b, c] = t.map(|i| uv[i as usize]);
         assert!(orient(a, b, c) < 0.0);
