@@ -155,6 +155,14 @@ fn load_path_regressions() {
     );
 }
 
+#[test]
+fn unwrap_pack_regressions() {
+    replay(
+        "unwrap_pack",
+        barytex_tests::fuzz_inputs::unwrap_pack::check_unwrap_pack,
+    );
+}
+
 /// `fuzz/max_len` gives every target in `fuzz/fuzz_targets/` the input size its decoder reads
 /// (`.ci/run` passes it to libFuzzer as `-max_len`).
 #[test]
@@ -179,6 +187,7 @@ fn max_len_table_matches_the_decoders() {
         ("interp_3d", f::interp_3d::INTERP_3D_LEN),
         ("shade", f::shade::SHADE_LEN),
         ("load_path", f::load_path::LOAD_PATH_LEN),
+        ("unwrap_pack", f::unwrap_pack::UNWRAP_PACK_LEN),
     ];
     let fuzz = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fuzz");
     let table = std::fs::read_to_string(fuzz.join("max_len")).expect("fuzz/max_len");
