@@ -30,7 +30,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 VENV = os.path.join(ROOT, "target", "xatlas-venv")
 PY = os.path.join(VENV, "bin", "python")
-METHODS = ["pairs", "per-triangle"]
+METHODS = ["lscm-arap", "lscm", "mean-value", "pairs", "per-triangle"]
 
 
 def ensure_venv():
@@ -120,7 +120,7 @@ def pareto_svg(rows, path):
     dist = [r["angle_mean"] for r in finite]
     t0, t1 = math.log10(min(times)) - 0.2, math.log10(max(times)) + 0.2
     d0, d1 = 1.0, max(dist) * 1.05 + 0.01
-    colours = {"xatlas": "#d62728", "pairs": "#1f77b4", "per-triangle": "#2ca02c"}
+    colours = {"xatlas": "#d62728", "lscm-arap": "#9467bd", "lscm": "#8c564b", "mean-value": "#ff7f0e", "pairs": "#1f77b4", "per-triangle": "#2ca02c"}
     shapes = {}
     out = [
         f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" font-family="sans-serif" font-size="11">',

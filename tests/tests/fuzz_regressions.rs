@@ -161,6 +161,31 @@ fn unwrap_pack_regressions() {
         "unwrap_pack",
         barytex_tests::fuzz_inputs::unwrap_pack::check_unwrap_pack,
     );
+fn unwrap_param_regressions() {
+    use barytex_tests::fuzz_inputs::unwrap_param::{UNWRAP_TRIANGLES_AT, unwrap_param_input};
+    replay(
+        "unwrap_param",
+        barytex_tests::fuzz_inputs::unwrap_param::check_unwrap_param,
+    );
+    // Layout: kind 1 (integer grid) reads coordinates modulo 4; extra triangles index modulo
+    // the vertex count.
+    let mut bytes = vec![1u8, 3, 3, 1];
+    for c in [5u32, 6, 7, 0, 1, 2, 4, 4, 4] {
+        bytes.extend(c.to_le_bytes());
+    }
+    bytes.resize(UNWRAP_TRIANGLES_AT, 0);
+    bytes.extend([0, 4, 2]);
+    let (p, t, o) = unwrap_param_input(&bytes);
+    assert_eq!(
+        p,
+        vec![
+            glam::DVec3::new(1.0, 2.0, 3.0),
+            glam::DVec3::new(0.0, 1.0, 2.0),
+            glam::DVec3::ZERO
+        ]
+    );
+    assert_eq!(t, vec![[0, 1, 2]]);
+    assert_eq!(o.method, barytex_unwrap::Method::Tutte);
 }
 
 /// `fuzz/max_len` gives every target in `fuzz/fuzz_targets/` the input size its decoder reads
@@ -188,6 +213,7 @@ fn max_len_table_matches_the_decoders() {
         ("shade", f::shade::SHADE_LEN),
         ("load_path", f::load_path::LOAD_PATH_LEN),
         ("unwrap_pack", f::unwrap_pack::UNWRAP_PACK_LEN),
+        ("unwrap_param", f::unwrap_param::UNWRAP_PARAM_LEN),
     ];
     let fuzz = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fuzz");
     let table = std::fs::read_to_string(fuzz.join("max_len")).expect("fuzz/max_len");

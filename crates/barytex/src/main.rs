@@ -253,7 +253,7 @@ struct UnwrapArgs {
     #[arg(long, default_value_t = 4)]
     padding: u32,
     /// How charts are made.
-    #[arg(long, value_enum, default_value = "pairs")]
+    #[arg(long, value_enum, default_value = "lscm-arap")]
     method: unwrap_cmd::MethodArg,
     /// Keep charts as they are instead of turning them to their minimum-area boxes.
     #[arg(long)]

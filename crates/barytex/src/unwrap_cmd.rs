@@ -21,7 +21,7 @@ use std::time::Instant;
 
 use barytex_gltf::{LoadOptions, Primitive, Topology, load_path};
 use barytex_unwrap::pack::PackOptions;
-use barytex_unwrap::{Atlas, Method, UnwrapOptions, unwrap};
+use barytex_unwrap::{Atlas, ChartMethod, Method, ParamOptions, UnwrapOptions, unwrap};
 use barytex_uv::layout::{LayoutOptions, draw_uv_layout, write_png};
 use barytex_uv::mesh::TriMesh;
 use clap::ValueEnum;
@@ -35,17 +35,48 @@ use measure::{LayoutStats, measure};
 /// How charts are made (`--method`).
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub(crate) enum MethodArg {
-    /// One chart per triangle, flat without distortion (lightmaps).
-    PerTriangle,
+    /// Segmentation, least squares conformal maps, then as-rigid-as-possible refinement.
+    LscmArap,
+    /// Segmentation and least squares conformal maps.
+    Lscm,
+    /// Segmentation and Floater's mean-value embedding onto a circle.
+    MeanValue,
+    /// Segmentation and Tutte's uniform embedding onto a circle.
+    Tutte,
+    /// Segmentation and the harmonic (cotangent) embedding onto a circle.
+    Harmonic,
     /// Two triangles sharing an edge per chart, unfolded flat without distortion.
     Pairs,
+    /// One chart per triangle, flat without distortion (lightmaps).
+    PerTriangle,
 }
 
 impl MethodArg {
-    fn method(self) -> Method {
+    fn options(self, pack: PackOptions) -> UnwrapOptions {
+        let param = |method| UnwrapOptions {
+            charts: ChartMethod::Parameterize,
+            param: ParamOptions {
+                method,
+                ..ParamOptions::default()
+            },
+            pack,
+        };
         match self {
-            Self::PerTriangle => Method::PerTriangle,
-            Self::Pairs => Method::TrianglePairs,
+            Self::LscmArap => param(Method::LscmArap),
+            Self::Lscm => param(Method::Lscm),
+            Self::MeanValue => param(Method::MeanValue),
+            Self::Tutte => param(Method::Tutte),
+            Self::Harmonic => param(Method::Harmonic),
+            Self::Pairs => UnwrapOptions {
+                charts: ChartMethod::TrianglePairs,
+                pack,
+                ..UnwrapOptions::default()
+            },
+            Self::PerTriangle => UnwrapOptions {
+                charts: ChartMethod::PerTriangle,
+                pack,
+                ..UnwrapOptions::default()
+            },
         }
     }
 }
@@ -345,10 +376,7 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     let progress = Progress::start();
     let started = Instant::now();
     let mut times: BTreeMap<&'static str, f64> = BTreeMap::new();
-    let unwrap_options = UnwrapOptions {
-        method: options.method.method(),
-        pack: options.pack,
-    };
+    let unwrap_options = options.method.options(options.pack);
     options
         .pack
         .validate()
@@ -575,7 +603,7 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     println!(
         "unwrapped {} mesh(es) of {name} with {:?} into TEXCOORD_{uv_set} ({}×{} texels, padding {}): wrote {}",
         results.len(),
-        unwrap_options.method,
+        options.method,
         options.pack.size,
         options.pack.size,
         options.pack.padding,
@@ -620,7 +648,7 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
             times.iter().map(|(k, v)| ((*k).to_owned(), json!(v))).collect();
         let value = json!({
             "source": name,
-            "method": format!("{:?}", unwrap_options.method),
+            "method": format!("{:?}", options.method),
             "size": options.pack.size,
             "padding": options.pack.padding,
             "meshes": ours.iter().map(LayoutStats::to_json).collect::<Vec<_>>(),

@@ -188,6 +188,8 @@ fn bad_unwrap_input_is_an_error_not_a_panic() {
                 "16".into(),
                 "--padding".into(),
                 "4".into(),
+                "--method".into(),
+                "per-triangle".into(),
             ],
             "do not fit",
         ),

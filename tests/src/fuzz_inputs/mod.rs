@@ -26,6 +26,7 @@ pub mod shade;
 pub mod slerp;
 pub mod textures_3d;
 pub mod unwrap_pack;
+pub mod unwrap_param;
 pub mod uv_mappings;
 
 use std::fmt::Write as _;

@@ -4,8 +4,8 @@
 //! return an atlas that passes the exact checks (no flip, no overlap, every uv in the square,
 //! every triangle in exactly one chart), or a packing error.
 //!
-//! - byte 0: `m`; bit 0 picks [`Method::PerTriangle`] over [`Method::TrianglePairs`], bit 1
-//!   turns rotations off.
+//! - byte 0: `m`; `m % 3` picks [`ChartMethod::Parameterize`] (default options),
+//!   [`ChartMethod::PerTriangle`] or [`ChartMethod::TrianglePairs`]; bit 7 turns rotations off.
 //! - byte 1: `s`; the atlas side is `16 · (1 + (s & 63))` texels, the padding `s >> 6` texels.
 //! - byte 2: `e`; coordinates are scaled by `2^(8·(e & 31) − 128)` (subnormal to `2¹²⁰`).
 //! - bytes 3 … 98: [`UNWRAP_PACK_VERTICES`] vertices, three `i8` coordinates each (a small
@@ -14,7 +14,7 @@
 //!   triples, at most [`UNWRAP_PACK_MAX_TRIANGLES`]).
 
 use barytex_unwrap::pack::{PackError, PackOptions};
-use barytex_unwrap::{Method, UnwrapError, UnwrapMesh, UnwrapOptions, check_atlas, unwrap};
+use barytex_unwrap::{ChartMethod, UnwrapError, UnwrapMesh, UnwrapOptions, check_atlas, unwrap};
 use glam::DVec3;
 
 /// Vertices an input holds.
@@ -45,18 +45,19 @@ pub fn unwrap_pack_input(bytes: &[u8]) -> (Vec<DVec3>, Vec<[u32; 3]>, UnwrapOpti
         .take(UNWRAP_PACK_MAX_TRIANGLES)
         .map(|t| [u32::from(t[0]) % n, u32::from(t[1]) % n, u32::from(t[2]) % n])
         .collect();
-    let method = if m & 1 == 1 {
-        Method::PerTriangle
-    } else {
-        Method::TrianglePairs
-    };
+    let charts = [
+        ChartMethod::Parameterize,
+        ChartMethod::PerTriangle,
+        ChartMethod::TrianglePairs,
+    ][usize::from(m % 3)];
     let options = UnwrapOptions {
-        method,
+        charts,
         pack: PackOptions {
             size: 16 * (1 + u32::from(s & 63)),
             padding: u32::from(s >> 6),
-            rotate: m & 2 == 0,
+            rotate: m & 0x80 == 0,
         },
+        ..UnwrapOptions::default()
     };
     (positions, triangles, options)
 }

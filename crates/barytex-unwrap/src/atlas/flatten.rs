@@ -1,8 +1,8 @@
 //! Charts of one or two triangles, laid flat without distortion: each triangle keeps its edge
 //! lengths and angles (an isometry), and a pair is unfolded about its shared edge.
 //!
-//! These are the charts of [`Method::PerTriangle`](super::Method::PerTriangle) and
-//! [`Method::TrianglePairs`](super::Method::TrianglePairs): no distortion at all, at the price of
+//! These are the charts of [`ChartMethod::PerTriangle`](super::ChartMethod::PerTriangle) and
+//! [`ChartMethod::TrianglePairs`](super::ChartMethod::TrianglePairs): no distortion at all, at the price of
 //! a seam along every chart edge. They suit lightmaps and baking, where a texel per surface
 //! patch matters more than continuity (the per-triangle layouts of lightmappers).
 
