@@ -1,11 +1,13 @@
 //! The whole pipeline: charts (parameterization), packing, and the exact checks.
 //!
-//! [`unwrap`] builds charts with the chosen [`ChartMethod`], packs them into the unit square
+//! [`unwrap`] builds charts with the chosen [`ChartMethod`] (splitting any parameterized chart
+//! that overlaps itself until none does), packs them into the unit square
 //! ([`pack`](crate::pack::pack)), rounds every uv to f32 (what a glTF file stores, so what is
 //! checked is what is written), and checks the result exactly ([`check_atlas`]).
 
 mod check;
 mod flatten;
+mod untangle;
 
 use std::time::Instant;
 
@@ -63,6 +65,9 @@ pub struct StageTimes {
 pub struct Atlas {
     /// The charts, uvs packed in `[0, 1]²`.
     pub charts: Vec<Chart>,
+    /// Charts of [`parameterize`] that overlapped themselves (exactly) and were split in two and
+    /// parameterized again, recursively, until none did.
+    pub untangled: usize,
     /// Packing's scale and efficiency.
     pub pack: PackStats,
     /// The exact checks of the packed, rounded charts.
@@ -101,8 +106,14 @@ pub struct Atlas {
 pub fn unwrap(mesh: &UnwrapMesh, options: &UnwrapOptions) -> Result<Atlas, UnwrapError> {
     options.pack.validate().map_err(UnwrapError::Pack)?;
     let started = Instant::now();
+    let mut untangled = 0;
     let mut charts = match options.charts {
-        ChartMethod::Parameterize => parameterize(mesh, &options.param)?,
+        ChartMethod::Parameterize => {
+            let charts = parameterize(mesh, &options.param)?;
+            let (charts, splits) = untangle::untangle(mesh, charts, &options.param)?;
+            untangled = splits;
+            charts
+        }
         ChartMethod::PerTriangle => flatten::per_triangle(mesh),
         ChartMethod::TrianglePairs => flatten::triangle_pairs(mesh),
     };
@@ -116,6 +127,7 @@ pub fn unwrap(mesh: &UnwrapMesh, options: &UnwrapOptions) -> Result<Atlas, Unwra
     let checked = Instant::now();
     Ok(Atlas {
         charts,
+        untangled,
         pack: pack_stats,
         check,
         times: StageTimes {
