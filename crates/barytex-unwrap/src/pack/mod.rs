@@ -42,6 +42,7 @@
 //! ```
 
 mod error;
+mod horizon;
 mod min_area_rect;
 mod options;
 mod skyline;
@@ -61,6 +62,13 @@ const BISECTION_STEPS: u32 = 20;
 /// brings two charts closer than the padding (f32's spacing near 1 is `2^-24`, which is 1/512
 /// texel in a 32768-texel atlas).
 const MARGIN_TEXELS: f64 = 1.0 / 64.0;
+
+/// The most charts packed on a horizon too (its search costs `charts × size × chart width`
+/// per attempt).
+const HORIZON_MAX_CHARTS: usize = 1024;
+
+/// Bisection steps of the horizon packer's scale, between the boxes' scale and the area bound.
+const HORIZON_BISECTION_STEPS: u32 = 12;
 
 /// What packing did.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -122,13 +130,14 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
         .map(|&i| extents[i].max_element())
         .fold(0.0, f64::max);
     let bin_f = f64::from(bin);
-    let mut high = if area > 0.0 {
+    let upper = if area > 0.0 {
         (bin_f / area.sqrt()).min(bin_f / longest)
     } else if longest > 0.0 {
         bin_f / longest
     } else {
         0.0
     };
+    let mut high = upper;
     if high.is_finite() && high > 0.0 {
         attempts += 1;
         if let Some(spots) = attempt(high) {
@@ -144,6 +153,67 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
                 }
             }
             let _ = low;
+        }
+    }
+    // Chart outlines on a horizon (Lévy et al. 2002) when there are few enough charts for its
+    // column-by-column search; kept when it reaches a larger scale than the boxes did.
+    if placed.len() <= HORIZON_MAX_CHARTS && scale > 0.0 {
+        let outlines: Vec<[horizon::Outline; 4]> = (0..charts.len())
+            .map(|i| {
+                [0, 1, 2, 3].map(|k| {
+                    horizon::Outline::new(&charts[i].uvs, &charts[i].triangles, extents[i], k)
+                })
+            })
+            .collect();
+        let mut by_area = placed.clone();
+        by_area.sort_by(|&a, &b| {
+            let (ea, eb) = (extents[a], extents[b]);
+            (eb.x * eb.y).total_cmp(&(ea.x * ea.y)).then(a.cmp(&b))
+        });
+        let attempt = |scale: f64| {
+            horizon::try_pack(
+                &by_area,
+                &outlines,
+                scale,
+                options.size,
+                options.padding,
+                options.rotate,
+            )
+        };
+        attempts += 1;
+        // The charts' own area bounds the scale (their boxes' area does not: outlines nest).
+        let surface: f64 = placed.iter().map(|&i| chart_uv_area(&charts[i])).sum();
+        let bound = if surface > 0.0 {
+            (bin_f / surface.sqrt()).min(bin_f / longest)
+        } else {
+            upper
+        };
+        if let Some(mut found) = attempt(scale) {
+            let (mut low, mut high) = (scale, bound.max(scale));
+            let mut best_scale = scale;
+            for _ in 0..HORIZON_BISECTION_STEPS {
+                let mid = 0.5 * (low + high);
+                attempts += 1;
+                match attempt(mid) {
+                    Some(spots) => (found, best_scale, low) = (spots, mid, mid),
+                    None => high = mid,
+                }
+            }
+            let size = f64::from(options.size);
+            let mut chart_area = 0.0;
+            for (&i, spot) in by_area.iter().zip(&found) {
+                let e = extents[i];
+                for uv in &mut charts[i].uvs {
+                    let q = horizon::turn(*uv, e, spot.turns) * best_scale;
+                    *uv = (spot.origin + q) / size;
+                }
+                chart_area += chart_uv_area(&charts[i]);
+            }
+            return Ok(PackStats {
+                texels_per_unit: best_scale,
+                efficiency: chart_area,
+                attempts,
+            });
         }
     }
     let size = f64::from(options.size);
