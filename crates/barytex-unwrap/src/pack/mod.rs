@@ -65,10 +65,10 @@ const MARGIN_TEXELS: f64 = 1.0 / 64.0;
 
 /// The most charts packed on a horizon too (its search costs `charts × size × chart width`
 /// per attempt).
-const HORIZON_MAX_CHARTS: usize = 1024;
+const HORIZON_MAX_CHARTS: usize = 256;
 
 /// Bisection steps of the horizon packer's scale, between the boxes' scale and the area bound.
-const HORIZON_BISECTION_STEPS: u32 = 12;
+const HORIZON_BISECTION_STEPS: u32 = 10;
 
 /// What packing did.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -156,7 +156,8 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
         }
     }
     // Chart outlines on a horizon (Lévy et al. 2002) when there are few enough charts for its
-    // column-by-column search; kept when it reaches a larger scale than the boxes did.
+    // column-by-column search (a parameterization's charts; flat pairs and triangles fill their
+    // boxes anyway); kept when it reaches a larger scale than the boxes did.
     if placed.len() <= HORIZON_MAX_CHARTS && scale > 0.0 {
         let outlines: Vec<[horizon::Outline; 4]> = (0..charts.len())
             .map(|i| {
@@ -165,22 +166,17 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
                 })
             })
             .collect();
-        let mut by_area = placed.clone();
-        by_area.sort_by(|&a, &b| {
-            let (ea, eb) = (extents[a], extents[b]);
-            (eb.x * eb.y).total_cmp(&(ea.x * ea.y)).then(a.cmp(&b))
-        });
-        let attempt = |scale: f64| {
-            horizon::try_pack(
-                &by_area,
-                &outlines,
-                scale,
-                options.size,
-                options.padding,
-                options.rotate,
-            )
-        };
-        attempts += 1;
+        // Three orders (largest area, tallest, widest first); the one reaching the largest
+        // scale is kept.
+        let keys: [fn(DVec2) -> f64; 3] = [|e| e.x * e.y, |e| e.y.min(e.x), |e| e.x.max(e.y)];
+        let orders: Vec<Vec<usize>> = keys
+            .iter()
+            .map(|key| {
+                let mut order = placed.clone();
+                order.sort_by(|&a, &b| key(extents[b]).total_cmp(&key(extents[a])).then(a.cmp(&b)));
+                order
+            })
+            .collect();
         // The charts' own area bounds the scale (their boxes' area does not: outlines nest).
         let surface: f64 = placed.iter().map(|&i| chart_uv_area(&charts[i])).sum();
         let bound = if surface > 0.0 {
@@ -188,17 +184,39 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
         } else {
             upper
         };
-        if let Some(mut found) = attempt(scale) {
-            let (mut low, mut high) = (scale, bound.max(scale));
-            let mut best_scale = scale;
+        let mut best_horizon: Option<(f64, usize, Vec<horizon::Placed>)> = None;
+        for (o, order) in orders.iter().enumerate() {
+            let attempt = |scale: f64| {
+                horizon::try_pack(
+                    order,
+                    &outlines,
+                    scale,
+                    options.size,
+                    options.padding,
+                    options.rotate,
+                )
+            };
+            let floor = best_horizon.as_ref().map_or(scale, |b| b.0);
+            attempts += 1;
+            let Some(mut found) = attempt(floor) else {
+                continue;
+            };
+            let (mut low, mut high) = (floor, bound.max(floor));
+            let mut reached = floor;
             for _ in 0..HORIZON_BISECTION_STEPS {
                 let mid = 0.5 * (low + high);
                 attempts += 1;
                 match attempt(mid) {
-                    Some(spots) => (found, best_scale, low) = (spots, mid, mid),
+                    Some(spots) => (found, reached, low) = (spots, mid, mid),
                     None => high = mid,
                 }
             }
+            if best_horizon.as_ref().is_none_or(|b| reached > b.0) {
+                best_horizon = Some((reached, o, found));
+            }
+        }
+        if let Some((best_scale, o, found)) = best_horizon {
+            let by_area = &orders[o];
             let size = f64::from(options.size);
             let mut chart_area = 0.0;
             for (&i, spot) in by_area.iter().zip(&found) {
