@@ -161,6 +161,9 @@ fn unwrap_pack_regressions() {
         "unwrap_pack",
         barytex_tests::fuzz_inputs::unwrap_pack::check_unwrap_pack,
     );
+}
+
+#[test]
 fn unwrap_param_regressions() {
     use barytex_tests::fuzz_inputs::unwrap_param::{UNWRAP_TRIANGLES_AT, unwrap_param_input};
     replay(

@@ -153,7 +153,12 @@ pub fn find_overlaps(uvs: &[DVec2], triangles: &[[u32; 3]], chart_of: &[u32]) ->
     let ranges = loop {
         let ranges: Vec<((usize, usize), (usize, usize))> = boxes
             .iter()
-            .map(|b| (grid_cell(b.1, lo, extent, side), grid_cell(b.2, lo, extent, side)))
+            .map(|b| {
+                (
+                    grid_cell(b.1, lo, extent, side),
+                    grid_cell(b.2, lo, extent, side),
+                )
+            })
             .collect();
         let entries: u64 = ranges
             .iter()

@@ -35,7 +35,11 @@ fn torus(n: u32, m: u32) -> UnwrapMesh {
 #[test]
 fn every_method_gives_a_valid_atlas_on_a_torus() {
     let mesh = torus(24, 12);
-    for method in [ChartMethod::Parameterize, ChartMethod::PerTriangle, ChartMethod::TrianglePairs] {
+    for method in [
+        ChartMethod::Parameterize,
+        ChartMethod::PerTriangle,
+        ChartMethod::TrianglePairs,
+    ] {
         let options = UnwrapOptions {
             charts: method,
             pack: PackOptions {
@@ -70,7 +74,10 @@ fn every_method_gives_a_valid_atlas_on_a_torus() {
                 sum3 += expected;
                 sum2 += area2;
             }
-            assert!((sum2 - sum3).abs() < 1e-4 * sum3, "{method:?}: {sum2} vs {sum3}");
+            assert!(
+                (sum2 - sum3).abs() < 1e-4 * sum3,
+                "{method:?}: {sum2} vs {sum3}"
+            );
         }
     }
 }
@@ -122,7 +129,10 @@ fn padding_holds_in_texels() {
             let (a, b) = (boxes[i], boxes[j]);
             let dx = (b.0.x - a.1.x).max(a.0.x - b.1.x);
             let dy = (b.0.y - a.1.y).max(a.0.y - b.1.y);
-            assert!(dx.max(dy) >= gap * (1.0 - 1e-6), "charts {i} and {j}: {dx} {dy}");
+            assert!(
+                dx.max(dy) >= gap * (1.0 - 1e-6),
+                "charts {i} and {j}: {dx} {dy}"
+            );
         }
     }
 }
@@ -174,7 +184,10 @@ fn bad_options_and_non_finite_uvs_are_errors() {
             rotate: false,
         },
     ] {
-        assert!(matches!(pack(&mut charts, &bad), Err(PackError::Options(_))));
+        assert!(matches!(
+            pack(&mut charts, &bad),
+            Err(PackError::Options(_))
+        ));
     }
 }
 
@@ -190,7 +203,11 @@ fn degenerate_triangles_get_positive_charts() {
     ];
     let t = vec![[0, 1, 2], [0, 0, 1], [0, 1, 3], [0, 1, 4]];
     let mesh = UnwrapMesh::new(p, t).expect("valid");
-    for method in [ChartMethod::Parameterize, ChartMethod::PerTriangle, ChartMethod::TrianglePairs] {
+    for method in [
+        ChartMethod::Parameterize,
+        ChartMethod::PerTriangle,
+        ChartMethod::TrianglePairs,
+    ] {
         let options = UnwrapOptions {
             charts: method,
             ..UnwrapOptions::default()

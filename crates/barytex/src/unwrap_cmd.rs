@@ -190,7 +190,9 @@ fn decoded_json_primitives(doc: &Value, mesh: usize) -> Vec<usize> {
                 .filter(|(_, p)| {
                     let mode = p.get("mode").and_then(Value::as_u64).unwrap_or(4);
                     Topology::from_gl(mode).is_some()
-                        && p.get("attributes").and_then(|a| a.get("POSITION")).is_some()
+                        && p.get("attributes")
+                            .and_then(|a| a.get("POSITION"))
+                            .is_some()
                 })
                 .map(|(i, _)| i)
                 .collect()
@@ -232,26 +234,29 @@ fn check_carried(doc: &Value, unit: &Unit<'_>) -> Result<(), String> {
                 "{at}: morph targets cannot be carried over yet; nothing was written"
             ));
         }
-        if let Some(names) = json.get("attributes").and_then(Value::as_object) {
-            if let Some(other) = names.keys().find(|k| !CARRIED.contains(&k.as_str())) {
-                return Err(format!(
-                    "{at}: attribute {other} cannot be carried over yet (unwrap rewrites {}); \
-                     nothing was written",
-                    CARRIED.join(", ")
-                ));
-            }
+        if let Some(names) = json.get("attributes").and_then(Value::as_object)
+            && let Some(other) = names.keys().find(|k| !CARRIED.contains(&k.as_str()))
+        {
+            return Err(format!(
+                "{at}: attribute {other} cannot be carried over yet (unwrap rewrites {}); \
+                 nothing was written",
+                CARRIED.join(", ")
+            ));
         }
     }
     Ok(())
 }
+
+/// A layout as flat lists: each uv vertex's position and glTF uv, and the triangles.
+type FlatLayout = (Vec<Vec3>, Vec<DVec2>, Vec<[u32; 3]>);
 
 /// What one unwrapped mesh gives.
 struct Unwrapped<'a> {
     welded: weld::Welded,
     atlas: Atlas,
     new_primitives: Vec<NewPrimitive<'a>>,
-    /// The layout as a flat list: position, glTF uv, triangles.
-    layout: (Vec<Vec3>, Vec<DVec2>, Vec<[u32; 3]>),
+    /// The layout as a flat list.
+    layout: FlatLayout,
     seconds_weld: f64,
 }
 
@@ -315,10 +320,7 @@ fn unwrap_unit<'a>(unit: &Unit<'a>, options: &UnwrapOptions) -> Result<Unwrapped
 
 /// A peer's uvs for the dumped mesh: `{"vertex_of": [..], "uvs": [[u, v], ..], "indices":
 /// [[a, b, c], ..]}`, each uv vertex naming a vertex of the dumped (welded) mesh.
-fn read_peer_uvs(
-    path: &Path,
-    positions: &[glam::DVec3],
-) -> Result<(Vec<Vec3>, Vec<DVec2>, Vec<[u32; 3]>), String> {
+fn read_peer_uvs(path: &Path, positions: &[glam::DVec3]) -> Result<FlatLayout, String> {
     let bytes = read_bounded(path, 1 << 30)?;
     let doc: Value =
         serde_json::from_slice(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
@@ -409,10 +411,12 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
                 decode_images: false,
                 ..LoadOptions::default()
             };
-            scene = load_path(path, &load_options).map_err(|e| format!("{}: {e}", path.display()))?;
+            scene =
+                load_path(path, &load_options).map_err(|e| format!("{}: {e}", path.display()))?;
             let bytes = read_bounded(path, load_options.limits.max_file_bytes)?;
             let json_bytes = if bytes.starts_with(b"glTF") {
-                let (json, bin) = glb::split(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+                let (json, bin) =
+                    glb::split(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
                 glb_bin = bin.map(<[u8]>::to_vec);
                 json.to_vec()
             } else {
@@ -481,13 +485,12 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         (Source::File { .. }, None) => Some(PathBuf::from(format!("{name}-unwrapped.gltf"))),
         (Source::Mesh(_), _) => None,
     };
-    if let Some(out) = &out {
-        if out
+    if let Some(out) = &out
+        && out
             .extension()
             .is_some_and(|e| !e.eq_ignore_ascii_case("gltf"))
-        {
-            return Err(format!("{}: unwrap writes .gltf (JSON and a .bin)", out.display()).into());
-        }
+    {
+        return Err(format!("{}: unwrap writes .gltf (JSON and a .bin)", out.display()).into());
     }
     // Unwrap each mesh.
     let mut results = Vec::with_capacity(units.len());
@@ -534,7 +537,10 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         written.push(out.display().to_string());
         written.push(bin.display().to_string());
         if !copied.is_empty() {
-            written.push(format!("{} referenced files copied beside it", copied.len()));
+            written.push(format!(
+                "{} referenced files copied beside it",
+                copied.len()
+            ));
         }
         times.insert("write", t.elapsed().as_secs_f64());
     }
@@ -544,7 +550,8 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     let layout_base = options.layout.clone().unwrap_or_else(|| match &out {
         Some(out) => out.with_file_name(format!(
             "{}-uv-layout.png",
-            out.file_stem().map_or_else(|| "out".into(), |s| s.to_string_lossy())
+            out.file_stem()
+                .map_or_else(|| "out".into(), |s| s.to_string_lossy())
         )),
         None => PathBuf::from(format!("{name}-uv-layout.png")),
     });
@@ -634,18 +641,29 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
              overlapping pairs"
         );
         let ms = |s: f64| format!("{:.1} ms", s * 1e3);
-        let stages: Vec<String> = times.iter().map(|(k, v)| format!("{k} {}", ms(*v))).collect();
+        let stages: Vec<String> = times
+            .iter()
+            .map(|(k, v)| format!("{k} {}", ms(*v)))
+            .collect();
         println!("time: {} (total {})", stages.join(", "), ms(total));
         if let Some(p) = &peer {
-            println!("compared uvs ({}):", options.compare_uvs.as_ref().map_or(String::new(), |p| p.display().to_string()));
+            println!(
+                "compared uvs ({}):",
+                options
+                    .compare_uvs
+                    .as_ref()
+                    .map_or(String::new(), |p| p.display().to_string())
+            );
             for line in p.lines() {
                 println!("  {line}");
             }
         }
     }
     if let Some(path) = &options.stats_json {
-        let seconds: serde_json::Map<String, Value> =
-            times.iter().map(|(k, v)| ((*k).to_owned(), json!(v))).collect();
+        let seconds: serde_json::Map<String, Value> = times
+            .iter()
+            .map(|(k, v)| ((*k).to_owned(), json!(v)))
+            .collect();
         let value = json!({
             "source": name,
             "method": format!("{:?}", options.method),

@@ -28,7 +28,12 @@ fn unwrap_and_check(model: &Path, dir: &Path, extra: &[&str]) {
     let out = dir.join("out.gltf");
     let stats = dir.join("stats.json");
     let output = barytex()
-        .args(["unwrap", model.to_str().unwrap(), "-o", out.to_str().unwrap()])
+        .args([
+            "unwrap",
+            model.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ])
         .args(["--size", "512", "--padding", "2", "--stats", "--stats-json"])
         .arg(&stats)
         .args(extra)
@@ -142,7 +147,12 @@ fn a_glb_unwraps_with_its_binary_chunk_written_out() {
     let dir = temp_dir("unwrap-glb");
     let out = dir.join("box.gltf");
     let output = barytex()
-        .args(["unwrap", model.to_str().unwrap(), "-o", out.to_str().unwrap()])
+        .args([
+            "unwrap",
+            model.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ])
         .output()
         .unwrap();
     assert!(
@@ -154,7 +164,10 @@ fn a_glb_unwraps_with_its_binary_chunk_written_out() {
     let after = only_primitive(&out);
     // Box has no uvs: the new set is TEXCOORD_0.
     assert!(before.tex_coords0.is_none());
-    assert_eq!(after.tex_coords0.as_ref().unwrap().len(), after.positions.len());
+    assert_eq!(
+        after.tex_coords0.as_ref().unwrap().len(),
+        after.positions.len()
+    );
     assert_eq!(after.triangles.len(), before.triangles.len());
     std::fs::remove_dir_all(&dir).ok();
 }
@@ -203,16 +216,19 @@ fn bad_unwrap_input_is_an_error_not_a_panic() {
         ));
         let o = dir.join("o.gltf").display().to_string();
         cases.push((
-            vec!["unwrap".into(), m, "-o".into(), o, "--uv-set".into(), "3".into()],
+            vec![
+                "unwrap".into(),
+                m,
+                "-o".into(),
+                o,
+                "--uv-set".into(),
+                "3".into(),
+            ],
             "without gaps",
         ));
     }
     for (args, expected) in cases {
-        let output = barytex()
-            .current_dir(&dir)
-            .args(&args)
-            .output()
-            .unwrap();
+        let output = barytex().current_dir(&dir).args(&args).output().unwrap();
         let stderr = String::from_utf8_lossy(&output.stderr);
         assert!(!output.status.success(), "{args:?} succeeded");
         assert!(stderr.contains(expected), "{args:?}: {stderr}");
@@ -233,7 +249,10 @@ fn a_built_in_mesh_unwraps_and_draws_its_layout() {
         .unwrap();
     let stdout = String::from_utf8_lossy(&output.stdout);
     assert!(output.status.success(), "{stdout}");
-    assert!(stdout.contains("flips 0") && stdout.contains("0 overlapping pairs"), "{stdout}");
+    assert!(
+        stdout.contains("flips 0") && stdout.contains("0 overlapping pairs"),
+        "{stdout}"
+    );
     assert!(layout.exists());
     std::fs::remove_dir_all(&dir).ok();
 }

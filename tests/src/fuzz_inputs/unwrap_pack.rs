@@ -43,7 +43,13 @@ pub fn unwrap_pack_input(bytes: &[u8]) -> (Vec<DVec3>, Vec<[u32; 3]>, UnwrapOpti
     let triangles: Vec<[u32; 3]> = tail
         .chunks_exact(3)
         .take(UNWRAP_PACK_MAX_TRIANGLES)
-        .map(|t| [u32::from(t[0]) % n, u32::from(t[1]) % n, u32::from(t[2]) % n])
+        .map(|t| {
+            [
+                u32::from(t[0]) % n,
+                u32::from(t[1]) % n,
+                u32::from(t[2]) % n,
+            ]
+        })
         .collect();
     let charts = [
         ChartMethod::Parameterize,
@@ -76,7 +82,10 @@ pub fn check_unwrap_pack(bytes: &[u8]) -> Result<(), String> {
         Err(e) => return Err(format!("unwrap failed: {e}")),
     };
     if !atlas.check.is_valid() {
-        return Err(format!("the atlas fails the exact checks: {:?}", atlas.check));
+        return Err(format!(
+            "the atlas fails the exact checks: {:?}",
+            atlas.check
+        ));
     }
     if check_atlas(&atlas.charts) != atlas.check {
         return Err("check_atlas disagrees with the pipeline's check".to_owned());

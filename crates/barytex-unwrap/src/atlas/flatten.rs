@@ -25,7 +25,7 @@ pub const MIN_ASPECT: f64 = 1.0 / 1024.0;
 fn lay_flat(a: DVec3, b: DVec3, c: DVec3, fallback: f64) -> [DVec2; 3] {
     let base = b - a;
     let length = base.length();
-    if !(length > 0.0) {
+    if length.is_nan() || length <= 0.0 {
         let s = fallback;
         return [DVec2::ZERO, DVec2::new(s, 0.0), DVec2::new(0.0, s)];
     }
@@ -38,7 +38,11 @@ fn lay_flat(a: DVec3, b: DVec3, c: DVec3, fallback: f64) -> [DVec2; 3] {
     } else {
         MIN_ASPECT * length
     };
-    [DVec2::ZERO, DVec2::new(length, 0.0), DVec2::new(along, height)]
+    [
+        DVec2::ZERO,
+        DVec2::new(length, 0.0),
+        DVec2::new(along, height),
+    ]
 }
 
 /// The corner order `(k, k+1, k+2)` that starts at the longest edge (a stable base).

@@ -63,7 +63,11 @@ fn halves(mesh: &UnwrapMesh, faces: &[u32]) -> [Vec<u32>; 2] {
         2
     };
     let mut sorted = faces.to_vec();
-    sorted.sort_by(|&a, &b| centroid(a)[axis].total_cmp(&centroid(b)[axis]).then(a.cmp(&b)));
+    sorted.sort_by(|&a, &b| {
+        centroid(a)[axis]
+            .total_cmp(&centroid(b)[axis])
+            .then(a.cmp(&b))
+    });
     let second = sorted.split_off(sorted.len() / 2);
     [sorted, second]
 }

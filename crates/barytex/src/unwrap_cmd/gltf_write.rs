@@ -54,7 +54,7 @@ struct Builder {
 
 impl Builder {
     fn align(&mut self) {
-        while self.bin.len() % 4 != 0 {
+        while !self.bin.len().is_multiple_of(4) {
             self.bin.push(0);
         }
     }
@@ -186,7 +186,10 @@ pub(crate) fn write(
     let clash = doc
         .get("buffers")
         .and_then(Value::as_array)
-        .is_some_and(|b| b.iter().any(|b| b.get("uri").and_then(Value::as_str) == Some(&bin_uri)));
+        .is_some_and(|b| {
+            b.iter()
+                .any(|b| b.get("uri").and_then(Value::as_str) == Some(&bin_uri))
+        });
     if clash {
         return Err(format!(
             "{}: the model already uses a buffer of that name; choose another -o",
@@ -204,7 +207,9 @@ pub(crate) fn write(
         bin: match (glb_buffer, glb_bin) {
             (true, Some(bin)) => {
                 let declared = doc["buffers"][0]["byteLength"].as_u64().unwrap_or(0);
-                let keep = usize::try_from(declared).unwrap_or(usize::MAX).min(bin.len());
+                let keep = usize::try_from(declared)
+                    .unwrap_or(usize::MAX)
+                    .min(bin.len());
                 bin[..keep].to_vec()
             }
             _ => Vec::new(),
