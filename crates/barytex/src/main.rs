@@ -242,7 +242,7 @@ struct UnwrapArgs {
     /// `<file stem>-unwrapped.gltf`.
     #[arg(short, long, requires = "file")]
     out: Option<PathBuf>,
-    /// The uv set to write, TEXCOORD_<N> (replaced if present); default 1 when every primitive
+    /// The uv set N to write, TEXCOORD_N (replaced if present); default 1 when every primitive
     /// has TEXCOORD_0 (kept for its textures), else 0.
     #[arg(long)]
     uv_set: Option<u32>,
