@@ -11,7 +11,18 @@
 //!   non-manifold detection), [`embed_disk`] (Tutte, mean value, harmonic), [`lscm`],
 //!   [`arap_refine`];
 //! - measures: [`flipped_triangles`] (exact), [`chart_stats`] / [`atlas_stats`] (angle and area
-//!   distortion).
+//!   distortion, L2 stretch);
+//! - [`shapes`]: generated spheres, tori, cubes and height-field grids to try it on.
+//!
+//! ```
+//! use barytex_unwrap::{ParamOptions, flipped_triangles, parameterize, shapes};
+//!
+//! let sphere = shapes::sphere(12, 24); // closed: it must be cut into disks
+//! let charts = parameterize(&sphere, &ParamOptions::default()).expect("unwrapped");
+//! assert!(charts.len() > 1);
+//! assert!(charts.iter().all(|c| flipped_triangles(c) == 0));
+//! assert_eq!(charts.iter().map(|c| c.faces.len()).sum::<usize>(), sphere.triangles().len());
+//! ```
 //!
 //! # References
 //! - W. T. Tutte, "How to draw a graph", *Proc. London Math. Soc.* (3) 13, 1963: a
@@ -26,6 +37,10 @@
 //!   parameterization", *Computer Graphics Forum* 27(5) (SGP), 2008.
 //! - U. Pinkall, K. Polthier, "Computing discrete minimal surfaces and their conjugates",
 //!   *Experimental Mathematics* 2(1), 1993 (the cotangent weights).
+//! - P. V. Sander, J. Snyder, S. J. Gortler, H. Hoppe, "Texture mapping progressive meshes",
+//!   *SIGGRAPH* 2001 (the stretch and conformality measures).
+//! - T. A. Davis, "Algorithm 849: A concise sparse Cholesky factorization package", *ACM Trans.
+//!   Math. Softw.* 31(4), 2005 (the sparse `L D Lᵀ`).
 //! - J. R. Shewchuk, "Adaptive precision floating-point arithmetic and fast robust geometric
 //!   predicates", *Discrete & Computational Geometry* 18(3), 1997 (the exact `orient2d`).
 

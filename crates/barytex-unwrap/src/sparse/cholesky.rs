@@ -13,8 +13,9 @@ use crate::alloc::try_vec_with_capacity;
 
 const NO_PARENT: u32 = u32::MAX;
 
-/// Largest factor, in non-zeros, attempted (beyond it the iterative solvers take over).
-pub(crate) const MAX_FACTOR_NONZEROS: usize = 1 << 27;
+/// Largest factor attempted, in non-zeros (32 Mi: 384 MiB of rows and values); beyond it the
+/// iterative solvers take over.
+pub(crate) const MAX_FACTOR_NONZEROS: usize = 1 << 25;
 
 /// `P A Pᵀ = L D Lᵀ` with unit lower-triangular `L` stored by columns.
 #[derive(Clone, Debug)]

@@ -41,8 +41,16 @@ impl HalfEdgeMesh {
     /// [`UnwrapError::NonManifoldEdge`] for an edge used twice in the same direction (three or
     /// more triangles, or inconsistent orientation), [`UnwrapError::NonManifoldVertex`] for a
     /// vertex whose triangles form more than one fan, [`UnwrapError::TooLarge`] past
-    /// [`crate::MAX_TRIANGLES`] triangles, [`UnwrapError::OutOfMemory`].
+    /// [`crate::MAX_VERTICES`] vertices or [`crate::MAX_TRIANGLES`] triangles,
+    /// [`UnwrapError::OutOfMemory`].
     pub fn from_triangles(vertex_count: u32, triangles: &[[u32; 3]]) -> Result<Self, UnwrapError> {
+        if vertex_count as usize > crate::MAX_VERTICES {
+            return Err(UnwrapError::TooLarge {
+                what: "vertices",
+                requested: u64::from(vertex_count),
+                limit: crate::MAX_VERTICES as u64,
+            });
+        }
         if triangles.len() > crate::MAX_TRIANGLES {
             return Err(UnwrapError::TooLarge {
                 what: "triangles",
@@ -408,6 +416,21 @@ mod tests {
         assert_eq!(e, Err(UnwrapError::NonManifoldEdge { a: 0, b: 1 }));
         let e = HalfEdgeMesh::from_triangles(4, &[[0, 1, 1]]);
         assert_eq!(e, Err(UnwrapError::RepeatedIndex { triangle: 0 }));
+    }
+
+    #[test]
+    fn oversize_vertex_counts_are_refused_before_allocating() {
+        let e = HalfEdgeMesh::from_triangles(u32::MAX, &[]);
+        assert!(
+            matches!(
+                e,
+                Err(UnwrapError::TooLarge {
+                    what: "vertices",
+                    ..
+                })
+            ),
+            "{e:?}"
+        );
     }
 
     #[test]
