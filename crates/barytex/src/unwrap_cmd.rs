@@ -626,11 +626,13 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     if options.stats {
         for (k, (r, s)) in results.iter().zip(&ours).enumerate() {
             println!(
-                "mesh {} ({} welded vertices, {} triangles): texel density {:.4} texels per unit",
+                "mesh {} ({} welded vertices, {} triangles): texel density {:.4} texels per unit; \
+                 {} charts split because they overlapped themselves",
                 units[k].mesh,
                 r.welded.mesh.positions().len(),
                 r.welded.mesh.triangles().len(),
-                r.atlas.pack.texels_per_unit
+                r.atlas.pack.texels_per_unit,
+                r.atlas.untangled
             );
             for line in s.lines() {
                 println!("  {line}");
