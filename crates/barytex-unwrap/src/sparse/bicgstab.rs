@@ -12,6 +12,22 @@ pub(crate) fn bicgstab(
     x: &mut [f64],
     control: SolveControl,
 ) -> SolveReport {
+    let inv_diag = jacobi(a);
+    preconditioned_bicgstab(a, b, x, control, &|r: &[f64], z: &mut [f64]| {
+        for ((z, r), d) in z.iter_mut().zip(r).zip(&inv_diag) {
+            *z = r * d;
+        }
+    })
+}
+
+/// [`bicgstab`] with the right preconditioner `z = M⁻¹ r`.
+pub(crate) fn preconditioned_bicgstab(
+    a: &CsrMatrix,
+    b: &[f64],
+    x: &mut [f64],
+    control: SolveControl,
+    precondition: &dyn Fn(&[f64], &mut [f64]),
+) -> SolveReport {
     let n = a.n();
     let b_norm = norm(b);
     if n == 0 || b_norm == 0.0 {
@@ -23,7 +39,6 @@ pub(crate) fn bicgstab(
             ..SolveReport::default()
         };
     }
-    let inv_diag = jacobi(a);
     let mut r = vec![0.0; n];
     a.mul(x, &mut r);
     for (r, b) in r.iter_mut().zip(b) {
@@ -48,8 +63,8 @@ pub(crate) fn bicgstab(
         rho = rho_new;
         for i in 0..n {
             p[i] = r[i] + beta * (p[i] - omega * v[i]);
-            y[i] = p[i] * inv_diag[i];
         }
+        precondition(&p, &mut y);
         a.mul(&y, &mut v);
         let rv = dot(&r_hat, &v);
         if rv == 0.0 || !rv.is_finite() {
@@ -68,9 +83,7 @@ pub(crate) fn bicgstab(
             residual = norm(&r) / b_norm;
             break;
         }
-        for i in 0..n {
-            z[i] = s[i] * inv_diag[i];
-        }
+        precondition(&s, &mut z);
         a.mul(&z, &mut t);
         let tt = dot(&t, &t);
         omega = if tt > 0.0 { dot(&t, &s) / tt } else { 0.0 };
