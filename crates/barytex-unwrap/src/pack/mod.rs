@@ -152,7 +152,6 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
                     None => high = mid,
                 }
             }
-            let _ = low;
         }
     }
     // Chart outlines on a horizon (Lévy et al. 2002) when there are few enough charts for its
