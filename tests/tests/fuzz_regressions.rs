@@ -156,6 +156,14 @@ fn load_path_regressions() {
 }
 
 #[test]
+fn unwrap_pack_regressions() {
+    replay(
+        "unwrap_pack",
+        barytex_tests::fuzz_inputs::unwrap_pack::check_unwrap_pack,
+    );
+}
+
+#[test]
 fn unwrap_param_regressions() {
     use barytex_tests::fuzz_inputs::unwrap_param::{UNWRAP_TRIANGLES_AT, unwrap_param_input};
     replay(
@@ -207,6 +215,7 @@ fn max_len_table_matches_the_decoders() {
         ("interp_3d", f::interp_3d::INTERP_3D_LEN),
         ("shade", f::shade::SHADE_LEN),
         ("load_path", f::load_path::LOAD_PATH_LEN),
+        ("unwrap_pack", f::unwrap_pack::UNWRAP_PACK_LEN),
         ("unwrap_param", f::unwrap_param::UNWRAP_PARAM_LEN),
     ];
     let fuzz = Path::new(env!("CARGO_MANIFEST_DIR")).join("../fuzz");

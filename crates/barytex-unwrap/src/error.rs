@@ -29,6 +29,8 @@ pub enum UnwrapError {
         /// The limit.
         limit: u64,
     },
+    /// The charts could not be packed.
+    Pack(crate::pack::PackError),
     /// An allocation the machine could not satisfy.
     OutOfMemory {
         /// What was being allocated.
@@ -88,6 +90,7 @@ impl fmt::Display for UnwrapError {
                 requested,
                 limit,
             } => write!(f, "{what}: {requested} exceeds the limit {limit}"),
+            Self::Pack(e) => write!(f, "packing: {e}"),
             Self::OutOfMemory { what, bytes } => {
                 write!(f, "out of memory allocating {bytes} bytes for {what}")
             }

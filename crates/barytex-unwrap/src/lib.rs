@@ -46,6 +46,7 @@
 
 mod alloc;
 mod arap;
+mod atlas;
 mod chart;
 mod check;
 mod distortion;
@@ -54,6 +55,8 @@ mod error;
 mod geometry;
 mod lscm;
 mod mesh;
+pub mod overlap;
+pub mod pack;
 mod param;
 mod segment;
 pub mod shapes;
@@ -61,6 +64,9 @@ mod sparse;
 mod topology;
 
 pub use arap::{ArapReport, BACKTRACKS, arap_refine};
+pub use atlas::{
+    Atlas, AtlasCheck, ChartMethod, MIN_ASPECT, StageTimes, UnwrapOptions, check_atlas, unwrap,
+};
 pub use chart::Chart;
 pub use check::{flipped_triangles, is_positively_oriented};
 pub use distortion::{ChartStats, atlas_stats, chart_stats};

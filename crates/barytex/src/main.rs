@@ -14,6 +14,12 @@
 //!   of every textured primitive over its texture (default folder `<file stem>-uv-layout`).
 //! - `barytex uv-layout --mesh sphere|equal-area-sphere|torus|cylinder|cube|plane [--size N]
 //!   [-o FILE.png]`: a parametric mesh's uv layout (default `<mesh>.png` in the current folder).
+//! - `barytex unwrap FILE [-o OUT.gltf] [--uv-set N] [--size N] [--padding N] [--method …]
+//!   [--stats] [--layout FILE.png] [--allow-dir DIR]…`: new texture coordinates for every mesh
+//!   of the scene (charts packed into the unit square, checked exactly for flips and overlaps),
+//!   written as `TEXCOORD_N` of a new .gltf and .bin with a picture of the layout
+//!   (`--mesh torus|sphere|…` unwraps a built-in mesh; `--dump-mesh`/`--compare-uvs` measure a
+//!   peer's uvs the same way, see docs/UNWRAP.md).
 //!
 //! The speed-vs-error report (`docs/report/`) is the workspace tool `barytex-report`
 //! (`cargo run --release -p barytex-report`), not a subcommand: it measures against test
@@ -22,6 +28,7 @@
 mod exact;
 mod examples;
 mod render_cmd;
+mod unwrap_cmd;
 mod uv_layout;
 
 use std::path::PathBuf;
@@ -210,6 +217,65 @@ enum Command {
     /// Draw uv layouts (wireframe, seams in red): a glTF file's textured primitives over their
     /// textures, or a parametric mesh's over a checker.
     UvLayout(UvLayoutArgs),
+    /// New texture coordinates for a glTF model: charts packed into the unit square with a
+    /// padding, checked exactly (no flip, no overlap), written as a new uv set with a picture of
+    /// the layout.
+    Unwrap(UnwrapArgs),
+}
+
+/// Options of `barytex unwrap` (a glTF file or `--mesh`, not both).
+#[derive(Debug, Args)]
+#[command(group(clap::ArgGroup::new("source").required(true).args(["file", "mesh"])))]
+struct UnwrapArgs {
+    /// A glTF (.gltf) or GLB (.glb) file: every mesh of its scene is unwrapped.
+    file: Option<PathBuf>,
+    /// A built-in mesh instead of a file (no model is written; its own uvs are ignored).
+    #[arg(long, value_enum)]
+    mesh: Option<uv_layout::MeshKind>,
+    /// Which of the file's scenes (default: its `scene`, else the first).
+    #[arg(long, requires = "file")]
+    scene: Option<usize>,
+    /// A folder besides the model's own that its relative URIs may read (repeatable).
+    #[arg(long = "allow-dir", value_name = "DIR", requires = "file")]
+    allow_dir: Vec<PathBuf>,
+    /// The .gltf to write (with a .bin of the same stem beside it); default
+    /// `<file stem>-unwrapped.gltf`.
+    #[arg(short, long, requires = "file")]
+    out: Option<PathBuf>,
+    /// The uv set N to write, TEXCOORD_N (replaced if present); default 1 when every primitive
+    /// has TEXCOORD_0 (kept for its textures), else 0.
+    #[arg(long)]
+    uv_set: Option<u32>,
+    /// Texture side in texels (1 to 32768).
+    #[arg(long, default_value_t = 1024)]
+    size: u32,
+    /// Texels between charts and to the border (at most a quarter of the size).
+    #[arg(long, default_value_t = 4)]
+    padding: u32,
+    /// How charts are made.
+    #[arg(long, value_enum, default_value = "lscm-arap")]
+    method: unwrap_cmd::MethodArg,
+    /// Keep charts as they are instead of turning them to their minimum-area boxes.
+    #[arg(long)]
+    no_rotate: bool,
+    /// The layout picture (default `<out stem>-uv-layout.png`; meshes after the first add
+    /// `-mesh<N>`).
+    #[arg(long, value_name = "FILE")]
+    layout: Option<PathBuf>,
+    /// Print charts, flips, overlaps, packing efficiency, distortion and time per stage.
+    #[arg(long)]
+    stats: bool,
+    /// Write the figures as JSON to FILE.
+    #[arg(long, value_name = "FILE")]
+    stats_json: Option<PathBuf>,
+    /// Write the welded mesh that is unwrapped (positions, triangles) as JSON to FILE, for a
+    /// peer to unwrap (tools/xatlas_unwrap.py); one-mesh models only.
+    #[arg(long, value_name = "FILE")]
+    dump_mesh: Option<PathBuf>,
+    /// Measure a peer's uvs of that mesh (JSON: vertex_of, uvs, indices) the same way as
+    /// ours; one-mesh models only.
+    #[arg(long, value_name = "FILE")]
+    compare_uvs: Option<PathBuf>,
 }
 
 /// Options of `barytex uv-layout` (a glTF file or `--mesh`, not both).
@@ -304,6 +370,35 @@ fn main() -> ExitCode {
             .and_then(|options| render_cmd::run(&options)),
         Some(Command::Examples) => examples::run(),
         Some(Command::Report { args }) => Err(report_moved(&args).into()),
+        Some(Command::Unwrap(args)) => {
+            let source = match (args.file, args.mesh) {
+                (Some(path), None) => Ok(unwrap_cmd::Source::File {
+                    path,
+                    scene: args.scene,
+                    allowed_roots: args.allow_dir,
+                }),
+                (None, Some(kind)) => Ok(unwrap_cmd::Source::Mesh(kind)),
+                _ => Err("unwrap takes a FILE or --mesh, not both".into()),
+            };
+            source.and_then(|source| {
+                unwrap_cmd::run(&unwrap_cmd::Options {
+                    source,
+                    out: args.out,
+                    uv_set: args.uv_set,
+                    method: args.method,
+                    pack: barytex_unwrap::pack::PackOptions {
+                        size: args.size,
+                        padding: args.padding,
+                        rotate: !args.no_rotate,
+                    },
+                    layout: args.layout,
+                    stats: args.stats,
+                    stats_json: args.stats_json,
+                    dump_mesh: args.dump_mesh,
+                    compare_uvs: args.compare_uvs,
+                })
+            })
+        }
         Some(Command::UvLayout(args)) => {
             // clap's `source` group already requires exactly one of the two.
             let source = match (args.file, args.mesh) {

@@ -30,7 +30,7 @@ pub(crate) enum MeshKind {
 }
 
 impl MeshKind {
-    fn build(self) -> Result<TriMesh, UvError> {
+    pub(crate) fn build(self) -> Result<TriMesh, UvError> {
         match self {
             Self::Sphere => mesh::sphere(32, 16),
             Self::EqualAreaSphere => mesh::sphere_with(32, 16, mesh::SphereUv::EqualArea),
@@ -41,7 +41,7 @@ impl MeshKind {
         }
     }
 
-    fn name(self) -> &'static str {
+    pub(crate) fn name(self) -> &'static str {
         match self {
             Self::Sphere => "sphere",
             Self::EqualAreaSphere => "equal-area-sphere",

@@ -25,6 +25,7 @@ pub mod sampling;
 pub mod shade;
 pub mod slerp;
 pub mod textures_3d;
+pub mod unwrap_pack;
 pub mod unwrap_param;
 pub mod uv_mappings;
 
