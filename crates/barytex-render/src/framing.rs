@@ -284,9 +284,7 @@ impl RenderCamera {
             let t = m.transpose();
             [t.x_axis, t.y_axis, t.z_axis, t.w_axis]
                 .iter()
-                .map(|r| {
-                    format!("  [{:>14} {:>14} {:>14} {:>14}]", r.x, r.y, r.z, r.w)
-                })
+                .map(|r| format!("  [{:>14} {:>14} {:>14} {:>14}]", r.x, r.y, r.z, r.w))
                 .collect::<Vec<_>>()
                 .join("\n")
         };
