@@ -328,6 +328,7 @@ pub(crate) fn write(
         if std::fs::canonicalize(&to).is_ok_and(|t| t == from) {
             continue;
         }
+        check_copy_source(&from, max_copy_bytes())?;
         if let Some(parent) = to.parent() {
             std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
         }
@@ -338,6 +339,55 @@ pub(crate) fn write(
     Ok((bin_path, copied))
 }
 
+/// The largest file copied beside the output: what the loader accepts for one buffer or image.
+fn max_copy_bytes() -> u64 {
+    let limits = barytex_gltf::SceneLimits::default();
+    limits.max_buffer_bytes.max(limits.max_image_file_bytes)
+}
+
+/// A referenced file is copied only if it is a regular file within `max_bytes`: the loader
+/// never reads a URI that no texture uses, so a FIFO there (whose open would wait for a writer
+/// forever) or a device would otherwise reach `std::fs::copy` unchecked.
+fn check_copy_source(from: &Path, max_bytes: u64) -> Result<(), String> {
+    let name = from.file_name().unwrap_or_default().to_string_lossy();
+    let meta = std::fs::metadata(from).map_err(|e| format!("{name}: {e}"))?;
+    if !meta.is_file() {
+        return Err(format!("{name}: not a regular file, not copied"));
+    }
+    if meta.len() > max_bytes {
+        return Err(format!(
+            "{name}: {} bytes, more than the {max_bytes} a referenced file may have",
+            meta.len()
+        ));
+    }
+    Ok(())
+}
+
 fn to_arrays<T, const N: usize>(values: &[T], f: impl Fn(&T) -> [f32; N]) -> Vec<[f32; N]> {
     values.iter().map(f).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn only_regular_files_within_the_limit_are_copied() {
+        let dir = std::env::temp_dir().join(format!("barytex-copy-source-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("temporary folder");
+        let file = dir.join("a.png");
+        std::fs::write(&file, [0u8; 10]).expect("writable");
+        assert_eq!(check_copy_source(&file, 10), Ok(()));
+        assert!(check_copy_source(&file, 9).is_err_and(|e| e.contains("more than")));
+        assert!(check_copy_source(&dir, 10).is_err_and(|e| e.contains("not a regular file")));
+        #[cfg(unix)]
+        {
+            let fifo = dir.join("fifo.png");
+            let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+            if made.is_ok_and(|status| status.success()) {
+                assert!(check_copy_source(&fifo, 10).is_err_and(|e| e.contains("not a regular")));
+            }
+        }
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }
