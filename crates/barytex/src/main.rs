@@ -27,6 +27,7 @@
 
 mod exact;
 mod examples;
+mod progress;
 mod render_cmd;
 mod unwrap_cmd;
 mod uv_layout;

@@ -1,6 +1,7 @@
 //! `barytex render FILE` and the default demo: load (or build) a scene, render it, write a PNG,
 //! and say where it went and how long each stage took.
 
+use crate::progress::Progress;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -326,52 +327,6 @@ fn stage_line(load: f64, decode: f64, s: &RenderStats, save: f64) -> String {
     )
 }
 
-/// A spinner on standard error naming the stage at work, a bar over the passes of a multi-pass
-/// render; indicatif hides both when standard error is not a terminal (logs, pipes, tests).
-struct Progress(indicatif::ProgressBar);
-
-impl Progress {
-    fn start() -> Self {
-        let bar = indicatif::ProgressBar::new_spinner();
-        if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} {msg} {elapsed}") {
-            bar.set_style(style);
-        }
-        bar.enable_steady_tick(std::time::Duration::from_millis(100));
-        Self(bar)
-    }
-
-    fn stage(&self, what: &'static str) {
-        self.0.set_message(what);
-    }
-
-    /// After pass `done` of `planned`: a bar once there is more than one pass.
-    fn passes(&self, done: u32, planned: u32) {
-        if planned <= 1 {
-            return;
-        }
-        if self.0.length() != Some(u64::from(planned)) {
-            if let Ok(style) = indicatif::ProgressStyle::with_template(
-                "{msg} [{bar:32}] pass {pos}/{len} {elapsed} (eta {eta})",
-            ) {
-                self.0.set_style(style.progress_chars("=> "));
-            }
-            self.0.set_length(u64::from(planned));
-        }
-        self.0.set_position(u64::from(done));
-    }
-
-    fn finish(&self) {
-        self.0.finish_and_clear();
-    }
-}
-
-impl Drop for Progress {
-    /// Clears the spinner on the error paths too.
-    fn drop(&mut self) {
-        self.0.finish_and_clear();
-    }
-}
-
 /// What is rendered, for messages: the file, or the demo scene.
 fn what(options: &Options) -> String {
     options.file.as_ref().map_or_else(
@@ -488,7 +443,7 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     // or a camera the scene lacks is one error line.
     let (scene, load_seconds) = load(options)?;
     barytex_render::choose_camera(&scene, &options.render)?;
-    progress.0.suspend(|| {
+    progress.suspend(|| {
         println!(
             "rendering {} at {}×{} on {} thread(s)",
             what(options),

@@ -14,6 +14,7 @@ mod measure;
 mod uri;
 mod weld;
 
+use crate::progress::Progress;
 use std::collections::{BTreeMap, HashMap};
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -114,30 +115,6 @@ pub(crate) struct Options {
     pub(crate) dump_mesh: Option<PathBuf>,
     /// Measures a peer's uvs of the dumped mesh (see `tools/xatlas_unwrap.py`).
     pub(crate) compare_uvs: Option<PathBuf>,
-}
-
-/// A spinner on standard error naming the stage (hidden when standard error is not a terminal).
-struct Progress(indicatif::ProgressBar);
-
-impl Progress {
-    fn start() -> Self {
-        let bar = indicatif::ProgressBar::new_spinner();
-        if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} {msg} {elapsed}") {
-            bar.set_style(style);
-        }
-        bar.enable_steady_tick(std::time::Duration::from_millis(100));
-        Self(bar)
-    }
-
-    fn stage(&self, what: String) {
-        self.0.set_message(what);
-    }
-}
-
-impl Drop for Progress {
-    fn drop(&mut self) {
-        self.0.finish_and_clear();
-    }
 }
 
 /// One mesh to unwrap: its triangle primitives, with where each sits in the JSON.
@@ -384,7 +361,7 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         .validate()
         .map_err(|e| format!("--size/--padding: {e}"))?;
     // Load.
-    progress.stage("loading".into());
+    progress.stage("loading");
     let built;
     let scene;
     let mut doc = Value::Null;
@@ -512,7 +489,7 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     // Write the model.
     let mut written = Vec::new();
     if let (Some(out), Source::File { path, .. }) = (&out, &options.source) {
-        progress.stage("writing".into());
+        progress.stage("writing");
         let t = Instant::now();
         let out_dir = absolute_dir(out)?;
         let model_dir = absolute_dir(path)?;
@@ -545,7 +522,7 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         times.insert("write", t.elapsed().as_secs_f64());
     }
     // The layout pictures.
-    progress.stage("drawing the layout".into());
+    progress.stage("drawing the layout");
     let t = Instant::now();
     let layout_base = options.layout.clone().unwrap_or_else(|| match &out {
         Some(out) => out.with_file_name(format!(
@@ -582,7 +559,7 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     }
     times.insert("layout", t.elapsed().as_secs_f64());
     // Measure.
-    progress.stage("measuring".into());
+    progress.stage("measuring");
     let t = Instant::now();
     let ours: Vec<LayoutStats> = results
         .iter()
