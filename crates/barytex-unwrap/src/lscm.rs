@@ -74,20 +74,8 @@ pub(crate) fn lscm_with_boundary(
     let mut uvs = vec![DVec2::ZERO; n];
     let d = (positions[b as usize] - positions[a as usize]).length();
     uvs[b as usize] = DVec2::new(if d > 0.0 && d.is_finite() { d } else { 1.0 }, 0.0);
-    let mut index = vec![NONE; n];
-    let mut unknowns = 0usize;
-    for v in 0..n as u32 {
-        if mesh.outgoing(v) != NONE && v != a && v != b {
-            index[v as usize] = unknowns as u32;
-            unknowns += 1;
-        }
-    }
-    // Nothing to solve is a converged, exact solve.
-    let mut solve = SolveReport {
-        converged: true,
-        direct: true,
-        ..SolveReport::default()
-    };
+    let (index, unknowns) = mesh.number_vertices(|v| v != a && v != b);
+    let mut solve = SolveReport::NOTHING_TO_SOLVE;
     if unknowns > 0 {
         let m = 2 * unknowns;
         let mut t = Triplets::new(m, 36 * mesh.triangles().len())?;

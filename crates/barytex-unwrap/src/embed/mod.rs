@@ -105,20 +105,8 @@ pub(crate) fn embed_with_boundary(
         uvs[v as usize] = p;
     }
     // Unknowns: the used interior vertices.
-    let mut index = vec![NONE; n];
-    let mut unknowns = 0usize;
-    for v in 0..n as u32 {
-        if mesh.outgoing(v) != NONE && !mesh.is_boundary_vertex(v) {
-            index[v as usize] = unknowns as u32;
-            unknowns += 1;
-        }
-    }
-    // Nothing to solve is a converged, exact solve.
-    let mut solve = SolveReport {
-        converged: true,
-        direct: true,
-        ..SolveReport::default()
-    };
+    let (index, unknowns) = mesh.number_vertices(|v| !mesh.is_boundary_vertex(v));
+    let mut solve = SolveReport::NOTHING_TO_SOLVE;
     if unknowns > 0 {
         let (a, rhs) = assemble(positions, mesh, weights, &index, unknowns, &uvs)?;
         let control = SolveControl::for_size(unknowns, TOLERANCE);

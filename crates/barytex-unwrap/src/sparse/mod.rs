@@ -42,6 +42,16 @@ pub struct SolveReport {
     pub direct: bool,
 }
 
+impl SolveReport {
+    /// The report of a system with no unknowns: nothing to solve is a converged, exact solve.
+    pub(crate) const NOTHING_TO_SOLVE: Self = Self {
+        iterations: 0,
+        relative_residual: 0.0,
+        converged: true,
+        direct: true,
+    };
+}
+
 /// Stopping rule of the iterative solvers.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct SolveControl {

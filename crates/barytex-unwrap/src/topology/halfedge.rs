@@ -196,6 +196,22 @@ impl HalfEdgeMesh {
         self.outgoing[v as usize]
     }
 
+    /// Numbers the vertices that some triangle uses and `select` keeps, in index order: `index[v]`
+    /// is `v`'s number, [`NONE`] for the others; also returns how many were numbered (the
+    /// unknowns of a linear system over the mesh).
+    pub(crate) fn number_vertices(&self, select: impl Fn(u32) -> bool) -> (Vec<u32>, usize) {
+        let n = self.vertex_count();
+        let mut index = vec![NONE; n as usize];
+        let mut count = 0usize;
+        for v in 0..n {
+            if self.outgoing(v) != NONE && select(v) {
+                index[v as usize] = count as u32;
+                count += 1;
+            }
+        }
+        (index, count)
+    }
+
     /// Whether `v` lies on the boundary.
     #[must_use]
     pub fn is_boundary_vertex(&self, v: u32) -> bool {
