@@ -217,7 +217,27 @@ fn has_symlink(path: &Path, roots: &[PathBuf]) -> bool {
 /// after the first check opens at once and the second check refuses it (for a regular file the
 /// flag changes nothing). The size from the metadata is not trusted either (a device reports
 /// 0): the read stops after `max_bytes + 1`.
-pub(crate) fn read_regular_file(path: &Path, max_bytes: u64) -> Result<Vec<u8>, ResolveError> {
+///
+/// What the loader reads every file with; public so that a tool reading the same untrusted
+/// folder (a model rewritten beside its files) reads it the same way.
+///
+/// # Errors
+/// [`ResolveError::NotRegularFile`] for a folder, device, FIFO or socket,
+/// [`ResolveError::TooLarge`] beyond `max_bytes`, [`ResolveError::Io`] when it cannot be read.
+///
+/// ```
+/// use barytex_gltf::{ResolveError, read_regular_file};
+///
+/// let dir = std::env::temp_dir();
+/// let path = dir.join(format!("barytex-read-doc-{}.bin", std::process::id()));
+/// std::fs::write(&path, [1u8, 2, 3])?;
+/// assert_eq!(read_regular_file(&path, 3)?, [1, 2, 3]);
+/// assert!(matches!(read_regular_file(&path, 2), Err(ResolveError::TooLarge(3))));
+/// assert!(matches!(read_regular_file(&dir, 3), Err(ResolveError::NotRegularFile)));
+/// std::fs::remove_file(&path)?;
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn read_regular_file(path: &Path, max_bytes: u64) -> Result<Vec<u8>, ResolveError> {
     let meta = std::fs::metadata(path).map_err(ResolveError::Io)?;
     if !meta.is_file() {
         return Err(ResolveError::NotRegularFile);

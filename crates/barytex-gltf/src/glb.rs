@@ -143,6 +143,31 @@ pub(crate) fn parse(bytes: &[u8]) -> Result<Glb<'_>, SceneError> {
     })
 }
 
+/// The JSON chunk and the BIN chunk (when present) of a GLB file, validated as the loader
+/// validates them (glTF 2.0 §4.4: header, chunk lengths and order, every length checked against
+/// the data; unknown chunk types skipped).
+///
+/// # Errors
+/// [`SceneError::Glb`] naming what is wrong with the container.
+///
+/// ```
+/// use barytex_gltf::glb_chunks;
+///
+/// let mut glb = b"glTF".to_vec();
+/// glb.extend(2u32.to_le_bytes());
+/// glb.extend(24u32.to_le_bytes()); // header 12 + chunk header 8 + 4 bytes of JSON
+/// glb.extend(4u32.to_le_bytes());
+/// glb.extend(b"JSON");
+/// glb.extend(b"{}  ");
+/// assert_eq!(glb_chunks(&glb)?, (b"{}  ".as_slice(), None));
+/// assert!(glb_chunks(b"glTF").is_err());
+/// # Ok::<(), barytex_gltf::SceneError>(())
+/// ```
+pub fn glb_chunks(bytes: &[u8]) -> Result<(&[u8], Option<&[u8]>), SceneError> {
+    let glb = parse(bytes)?;
+    Ok((glb.json, glb.bin))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

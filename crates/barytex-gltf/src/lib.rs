@@ -75,9 +75,10 @@ mod variants;
 
 use std::path::{Path, PathBuf};
 
-pub use access::{ResolveError, UriResolver};
+pub use access::{ResolveError, UriResolver, read_regular_file};
 pub use camera::{DocumentCamera, Projection, SceneCamera};
 pub use error::SceneError;
+pub use glb::glb_chunks;
 pub use light::{LightKind, PunctualLight, SceneLight};
 pub use limits::SceneLimits;
 pub use material::{AlphaMode, Material, TextureRef, TextureRole, TextureRoles};

@@ -8,7 +8,6 @@
 //! vertices (normals, old uvs); in the output each primitive's vertices are split again where
 //! a chart boundary runs, and every attribute follows its vertex.
 
-mod glb;
 mod gltf_write;
 mod measure;
 mod uri;
@@ -16,7 +15,6 @@ mod weld;
 
 use crate::progress::Progress;
 use std::collections::{BTreeMap, HashMap};
-use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -128,17 +126,10 @@ struct Unit<'a> {
 /// The largest layout picture side (pixels).
 const MAX_LAYOUT_PICTURE: u32 = 2048;
 
-/// A file's bytes, refusing more than `limit`.
+/// A file's bytes, read as the loader reads its files (a regular file of at most `limit` bytes,
+/// opened without waiting on a FIFO).
 fn read_bounded(path: &Path, limit: u64) -> Result<Vec<u8>, String> {
-    let file = std::fs::File::open(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let mut bytes = Vec::new();
-    file.take(limit.saturating_add(1))
-        .read_to_end(&mut bytes)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    if bytes.len() as u64 > limit {
-        return Err(format!("{}: larger than {limit} bytes", path.display()));
-    }
-    Ok(bytes)
+    barytex_gltf::read_regular_file(path, limit).map_err(|e| format!("{}: {e}", path.display()))
 }
 
 fn built_in(kind: MeshKind) -> Result<Primitive, String> {
@@ -392,8 +383,8 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
                 load_path(path, &load_options).map_err(|e| format!("{}: {e}", path.display()))?;
             let bytes = read_bounded(path, load_options.limits.max_file_bytes)?;
             let json_bytes = if bytes.starts_with(b"glTF") {
-                let (json, bin) =
-                    glb::split(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+                let (json, bin) = barytex_gltf::glb_chunks(&bytes)
+                    .map_err(|e| format!("{}: {e}", path.display()))?;
                 glb_bin = bin.map(<[u8]>::to_vec);
                 json.to_vec()
             } else {

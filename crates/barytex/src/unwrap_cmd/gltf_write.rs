@@ -328,11 +328,11 @@ pub(crate) fn write(
         if std::fs::canonicalize(&to).is_ok_and(|t| t == from) {
             continue;
         }
-        check_copy_source(&from, max_copy_bytes())?;
+        let bytes = read_copy_source(&from, max_copy_bytes())?;
         if let Some(parent) = to.parent() {
             std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
         }
-        std::fs::copy(&from, &to).map_err(|e| format!("{}: {e}", to.display()))?;
+        std::fs::write(&to, bytes).map_err(|e| format!("{}: {e}", to.display()))?;
         copied.push(to);
     }
     std::fs::write(out, text).map_err(|e| format!("{}: {e}", out.display()))?;
@@ -345,22 +345,21 @@ fn max_copy_bytes() -> u64 {
     limits.max_buffer_bytes.max(limits.max_image_file_bytes)
 }
 
-/// A referenced file is copied only if it is a regular file within `max_bytes`: the loader
-/// never reads a URI that no texture uses, so a FIFO there (whose open would wait for a writer
-/// forever) or a device would otherwise reach `std::fs::copy` unchecked.
-fn check_copy_source(from: &Path, max_bytes: u64) -> Result<(), String> {
+/// The bytes of a referenced file to copy, read as the loader reads its files
+/// ([`barytex_gltf::read_regular_file`]): only a regular file within `max_bytes`. The loader
+/// never reads a URI that no texture uses, so without this a FIFO there (whose open waits for a
+/// writer forever) or a device would reach the copy unchecked.
+fn read_copy_source(from: &Path, max_bytes: u64) -> Result<Vec<u8>, String> {
     let name = from.file_name().unwrap_or_default().to_string_lossy();
-    let meta = std::fs::metadata(from).map_err(|e| format!("{name}: {e}"))?;
-    if !meta.is_file() {
-        return Err(format!("{name}: not a regular file, not copied"));
-    }
-    if meta.len() > max_bytes {
-        return Err(format!(
-            "{name}: {} bytes, more than the {max_bytes} a referenced file may have",
-            meta.len()
-        ));
-    }
-    Ok(())
+    barytex_gltf::read_regular_file(from, max_bytes).map_err(|e| match e {
+        barytex_gltf::ResolveError::TooLarge(size) => {
+            format!("{name}: {size} bytes, more than the {max_bytes} a referenced file may have")
+        }
+        barytex_gltf::ResolveError::NotRegularFile => {
+            format!("{name}: not a regular file, not copied")
+        }
+        other => format!("{name}: {other}"),
+    })
 }
 
 fn to_arrays<T, const N: usize>(values: &[T], f: impl Fn(&T) -> [f32; N]) -> Vec<[f32; N]> {
@@ -377,15 +376,15 @@ mod tests {
         std::fs::create_dir_all(&dir).expect("temporary folder");
         let file = dir.join("a.png");
         std::fs::write(&file, [0u8; 10]).expect("writable");
-        assert_eq!(check_copy_source(&file, 10), Ok(()));
-        assert!(check_copy_source(&file, 9).is_err_and(|e| e.contains("more than")));
-        assert!(check_copy_source(&dir, 10).is_err_and(|e| e.contains("not a regular file")));
+        assert_eq!(read_copy_source(&file, 10), Ok(vec![0u8; 10]));
+        assert!(read_copy_source(&file, 9).is_err_and(|e| e.contains("more than")));
+        assert!(read_copy_source(&dir, 10).is_err_and(|e| e.contains("not a regular file")));
         #[cfg(unix)]
         {
             let fifo = dir.join("fifo.png");
             let made = std::process::Command::new("mkfifo").arg(&fifo).status();
             if made.is_ok_and(|status| status.success()) {
-                assert!(check_copy_source(&fifo, 10).is_err_and(|e| e.contains("not a regular")));
+                assert!(read_copy_source(&fifo, 10).is_err_and(|e| e.contains("not a regular")));
             }
         }
         let _ = std::fs::remove_dir_all(&dir);
