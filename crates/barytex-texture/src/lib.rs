@@ -62,6 +62,8 @@ mod limits;
 pub mod load;
 pub mod mip_chain;
 pub mod mip_generation;
+#[cfg(feature = "image")]
+mod png_palette;
 pub mod procedural;
 pub mod reference;
 pub mod remap;

@@ -129,6 +129,7 @@ pub fn load_from_memory(
     color_space: ColorSpace,
     limits: &Limits,
 ) -> Result<AnyTexture2d, TextureError> {
+    crate::png_palette::check_palette(bytes)?;
     let reader = || {
         ImageReader::new(Cursor::new(bytes))
             .with_guessed_format()

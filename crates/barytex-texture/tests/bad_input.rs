@@ -476,3 +476,33 @@ fn cube_sanitises_nan_lod_clamps_and_bias() {
         assert!(c.is_finite(), "{c:?}");
     }
 }
+
+/// A PNG whose palette chunk is 550 bytes (not whole three-byte entries) is refused with a
+/// decode error. The `png` crate (0.18.1) panics on it in its palette expansion; the
+/// `png_jpeg_loader` fuzz target found it (fuzzing builds skip the checksums), and this copy has
+/// valid CRCs, so any build reaches the panic without the check. PNG §11.2.3 makes such a chunk
+/// an error.
+#[test]
+fn a_palette_of_partial_entries_is_refused_not_a_panic() {
+    use barytex_texture::Limits;
+    use barytex_texture::load::load_from_memory;
+
+    let bytes = include_bytes!("inputs/plte-length-550.png");
+    // The fuzz target's small limits, and the defaults.
+    let small = Limits {
+        max_width: 64,
+        max_height: 64,
+        max_bytes: 64 * 64 * 16,
+    };
+    for (color_space, limits) in [ColorSpace::Srgb, ColorSpace::Linear]
+        .into_iter()
+        .flat_map(|c| [(c, small), (c, Limits::default())])
+    {
+        let result = load_from_memory(bytes, color_space, &limits);
+        assert!(
+            matches!(&result, Err(TextureError::Decode(m)) if m.contains("PLTE")),
+            "{:?}",
+            result.map(|t| t.size())
+        );
+    }
+}
