@@ -259,6 +259,21 @@ struct UnwrapArgs {
     /// Keep charts as they are instead of turning them to their minimum-area boxes.
     #[arg(long)]
     no_rotate: bool,
+    /// Segmentation cone in degrees (0 to 180]: a chart's normals stay this close to its mean
+    /// normal; smaller gives more, flatter charts (default: the library's).
+    #[arg(long, value_name = "DEGREES")]
+    cone: Option<f64>,
+    /// Split a chart whose mean angle distortion σ1/σ2 exceeds this (at least 1; default: the
+    /// library's). Free-boundary methods only.
+    #[arg(long, value_name = "RATIO")]
+    max_angle_distortion: Option<f64>,
+    /// Split a chart whose mean area distortion exceeds this (at least 1; default: the
+    /// library's). Free-boundary methods only.
+    #[arg(long, value_name = "RATIO")]
+    max_area_distortion: Option<f64>,
+    /// ARAP iterations at most, for lscm-arap (default: the library's).
+    #[arg(long, value_name = "N")]
+    arap_iterations: Option<u32>,
     /// The layout picture (default `<out stem>-uv-layout.png`; meshes after the first add
     /// `-mesh<N>`).
     #[arg(long, value_name = "FILE")]
@@ -387,6 +402,20 @@ fn main() -> ExitCode {
                     out: args.out,
                     uv_set: args.uv_set,
                     method: args.method,
+                    param: {
+                        let d = barytex_unwrap::ParamOptions::default();
+                        barytex_unwrap::ParamOptions {
+                            cone_degrees: args.cone.unwrap_or(d.cone_degrees),
+                            max_angle_distortion: args
+                                .max_angle_distortion
+                                .unwrap_or(d.max_angle_distortion),
+                            max_area_distortion: args
+                                .max_area_distortion
+                                .unwrap_or(d.max_area_distortion),
+                            max_iterations: args.arap_iterations.unwrap_or(d.max_iterations),
+                            ..d
+                        }
+                    },
                     pack: barytex_unwrap::pack::PackOptions {
                         size: args.size,
                         padding: args.padding,

@@ -51,12 +51,14 @@ pub(crate) enum MethodArg {
 }
 
 impl MethodArg {
-    fn options(self, pack: PackOptions) -> UnwrapOptions {
+    /// The library's options for this method, with `base` for the parameterizing methods (its
+    /// own method replaced).
+    fn options(self, base: &ParamOptions, pack: PackOptions) -> UnwrapOptions {
         let param = |method| UnwrapOptions {
             charts: ChartMethod::Parameterize,
             param: ParamOptions {
                 method,
-                ..ParamOptions::default()
+                ..base.clone()
             },
             pack,
         };
@@ -103,6 +105,8 @@ pub(crate) struct Options {
     /// `TEXCOORD_<n>` to write; `None`: 1 when every primitive has `TEXCOORD_0`, else 0.
     pub(crate) uv_set: Option<u32>,
     pub(crate) method: MethodArg,
+    /// Segmentation and distortion options (their `method` is `method`'s).
+    pub(crate) param: ParamOptions,
     pub(crate) pack: PackOptions,
     /// The layout picture (default `<out stem>-uv-layout.png`).
     pub(crate) layout: Option<PathBuf>,
@@ -346,7 +350,7 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     let progress = Progress::start();
     let started = Instant::now();
     let mut times: BTreeMap<&'static str, f64> = BTreeMap::new();
-    let unwrap_options = options.method.options(options.pack);
+    let unwrap_options = options.method.options(&options.param, options.pack);
     options
         .pack
         .validate()

@@ -206,6 +206,24 @@ fn bad_unwrap_input_is_an_error_not_a_panic() {
             ],
             "do not fit",
         ),
+        (
+            ["unwrap", "--mesh", "torus", "--cone", "0"]
+                .map(String::from)
+                .to_vec(),
+            "cone_degrees is out of range",
+        ),
+        (
+            ["unwrap", "--mesh", "torus", "--cone", "NaN"]
+                .map(String::from)
+                .to_vec(),
+            "cone_degrees is out of range",
+        ),
+        (
+            ["unwrap", "--mesh", "torus", "--max-angle-distortion", "0.5"]
+                .map(String::from)
+                .to_vec(),
+            "max_angle_distortion is out of range",
+        ),
     ];
     if let Some(model) = gltf_fixture("Suzanne/glTF/Suzanne.gltf") {
         let m = model.display().to_string();
@@ -254,5 +272,33 @@ fn a_built_in_mesh_unwraps_and_draws_its_layout() {
         "{stdout}"
     );
     assert!(layout.exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The number after `charts ` in `--stats` output.
+fn chart_count(stdout: &str) -> usize {
+    let rest = &stdout[stdout.find("  charts ").unwrap() + 9..];
+    rest[..rest.find(',').unwrap()].parse().unwrap()
+}
+
+#[test]
+fn a_smaller_cone_gives_more_flatter_charts() {
+    let dir = temp_dir("unwrap-cone");
+    std::fs::create_dir_all(&dir).unwrap();
+    let layout = dir.join("sphere.png");
+    let run = |cone: &str| {
+        let output = barytex()
+            .args(["unwrap", "--mesh", "sphere", "--stats", "--cone", cone])
+            .arg("--layout")
+            .arg(&layout)
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8_lossy(&output.stdout).into_owned();
+        assert!(output.status.success(), "{stdout}");
+        assert!(stdout.contains("flips 0"), "{stdout}");
+        chart_count(&stdout)
+    };
+    let (narrow, wide) = (run("30"), run("85"));
+    assert!(narrow > wide, "{narrow} charts at 30°, {wide} at 85°");
     std::fs::remove_dir_all(&dir).ok();
 }
