@@ -55,7 +55,11 @@ def meshes():
                 found.append((name, [path]))
     else:
         print("BARYTEX_FIXTURES is not set: only the built-in meshes", file=sys.stderr)
-    found += [("torus 32×16", ["--mesh", "torus"]), ("sphere 32×16", ["--mesh", "sphere"])]
+    found += [
+        ("torus 32×16", ["--mesh", "torus"]),
+        ("sphere 32×16", ["--mesh", "sphere"]),
+        ("torus 256×128", ["--mesh", "dense-torus"]),
+    ]
     return found
 
 
@@ -174,12 +178,17 @@ def main():
     parser.add_argument("--padding", type=int, default=4)
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--report", help="folder for unwrap.md and unwrap-pareto.svg")
+    parser.add_argument("--only", action="append", help="only the meshes whose name contains this (repeatable)")
+    parser.add_argument("--methods", help="comma-separated barytex methods (default: all)")
     args = parser.parse_args()
+    methods = args.methods.split(",") if args.methods else METHODS
     subprocess.check_call(["cargo", "build", "--release", "-q", "-p", "barytex"], cwd=ROOT)
     binary = os.path.join(os.environ.get("CARGO_TARGET_DIR", os.path.join(ROOT, "target")), "release", "barytex")
     common = ["--size", str(args.size), "--padding", str(args.padding)]
     rows = []
     for name, source in meshes():
+        if args.only and not any(o in name for o in args.only):
+            continue
         with tempfile.TemporaryDirectory() as tmp:
             mesh_json = os.path.join(tmp, "mesh.json")
             barytex(binary, source, tmp, common + ["--dump-mesh", mesh_json])
@@ -188,7 +197,7 @@ def main():
             with open(peer, "w") as f:
                 json.dump(uvs, f)
             xatlas_row = None
-            for method in METHODS:
+            for method in methods:
                 stats, seconds, checks = [], [], []
                 for _ in range(args.runs):
                     out = os.path.join(tmp, "stats.json")

@@ -21,6 +21,8 @@ pub(crate) enum MeshKind {
     EqualAreaSphere,
     /// `torus(32, 16, 1.0, 0.4)`.
     Torus,
+    /// `torus(256, 128, 1.0, 0.4)`: 65 536 triangles, for timing large meshes.
+    DenseTorus,
     /// `cylinder(24, 4, caps)`.
     Cylinder,
     /// `cube(4)`, the 3 × 2 atlas.
@@ -35,6 +37,7 @@ impl MeshKind {
             Self::Sphere => mesh::sphere(32, 16),
             Self::EqualAreaSphere => mesh::sphere_with(32, 16, mesh::SphereUv::EqualArea),
             Self::Torus => mesh::torus(32, 16, 1.0, 0.4),
+            Self::DenseTorus => mesh::torus(256, 128, 1.0, 0.4),
             Self::Cylinder => mesh::cylinder(24, 4, true),
             Self::Cube => mesh::cube(4),
             Self::Plane => mesh::plane(8, 8),
@@ -46,6 +49,7 @@ impl MeshKind {
             Self::Sphere => "sphere",
             Self::EqualAreaSphere => "equal-area-sphere",
             Self::Torus => "torus",
+            Self::DenseTorus => "dense-torus",
             Self::Cylinder => "cylinder",
             Self::Cube => "cube",
             Self::Plane => "plane",

@@ -111,7 +111,10 @@ fn unwrap_fixture(model: &str) {
             // The default segmentation cone (50°) keeps both means under 1.03 on the fixtures
             // (at the earlier 80° default Suzanne's angle distortion was 1.050).
             let (angle, area) = (angle / weight, area / weight);
-            assert!(angle < 1.03 && area < 1.03, "{model}: angle {angle}, area {area}");
+            assert!(
+                angle < 1.03 && area < 1.03,
+                "{model}: angle {angle}, area {area}"
+            );
         }
         println!(
             "{model} {method:?}: {} triangles, {} charts, {} fallbacks, angle {:.4}, area {:.4}, {seconds:.3} s",
