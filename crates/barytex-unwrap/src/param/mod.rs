@@ -13,7 +13,7 @@ pub use report::{ChartReport, Parameterization};
 use glam::DVec3;
 
 use crate::geometry::is_degenerate;
-use crate::segment::{bisect, grow_charts};
+use crate::segment::{bisect, grow_charts, smooth_seams};
 use crate::topology::{HalfEdgeMesh, NONE, weld_positions};
 use crate::{Chart, UnwrapError, UnwrapMesh};
 use chart::Context;
@@ -131,7 +131,8 @@ pub fn parameterize_with_report(
         })
         .unzip();
     let cos_cone = options.cone_degrees.to_radians().cos();
-    let mut work = grow_charts(&normals, &areas, &usable, &twins, cos_cone);
+    let grown = grow_charts(&normals, &areas, &usable, &twins, cos_cone);
+    let mut work = smooth_seams(grown, &normals, &areas, &twins, cos_cone);
     let mut out = Parameterization {
         non_manifold_half_edges: non_manifold,
         ..Parameterization::default()

@@ -16,6 +16,9 @@ use glam::DVec3;
 
 use crate::topology::NONE;
 
+mod smooth;
+pub(crate) use smooth::smooth_seams;
+
 /// The face across half-edge `h`'s edge, or [`NONE`].
 fn across(twins: &[u32], h: usize) -> u32 {
     let t = twins[h];
