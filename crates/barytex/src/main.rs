@@ -239,8 +239,8 @@ struct UnwrapArgs {
     /// A folder besides the model's own that its relative URIs may read (repeatable).
     #[arg(long = "allow-dir", value_name = "DIR", requires = "file")]
     allow_dir: Vec<PathBuf>,
-    /// The .gltf to write (with a .bin of the same stem beside it); default
-    /// `<file stem>-unwrapped.gltf`.
+    /// The .gltf to write (with a .bin of the same stem beside it) or the .glb (one file);
+    /// default `<file stem>-unwrapped.gltf`.
     #[arg(short, long, requires = "file")]
     out: Option<PathBuf>,
     /// The uv set N to write, TEXCOORD_N (replaced if present); default 1 when every primitive

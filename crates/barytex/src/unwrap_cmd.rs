@@ -460,9 +460,13 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
     if let Some(out) = &out
         && out
             .extension()
-            .is_some_and(|e| !e.eq_ignore_ascii_case("gltf"))
+            .is_none_or(|e| !(e.eq_ignore_ascii_case("gltf") || e.eq_ignore_ascii_case("glb")))
     {
-        return Err(format!("{}: unwrap writes .gltf (JSON and a .bin)", out.display()).into());
+        return Err(format!(
+            "{}: unwrap writes .gltf (JSON and a .bin) or .glb",
+            out.display()
+        )
+        .into());
     }
     // Unwrap each mesh.
     let mut results = Vec::with_capacity(units.len());
@@ -507,7 +511,9 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
             &all,
         )?;
         written.push(out.display().to_string());
-        written.push(bin.display().to_string());
+        if bin != out_file {
+            written.push(bin.display().to_string());
+        }
         if !copied.is_empty() {
             written.push(format!(
                 "{} referenced files copied beside it",

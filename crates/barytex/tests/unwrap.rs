@@ -140,6 +140,55 @@ fn avocado_unwraps_per_triangle() {
 }
 
 #[test]
+fn a_glb_is_written_when_asked_for_from_gltf_and_from_glb() {
+    let dir = temp_dir("unwrap-to-glb");
+    std::fs::create_dir_all(&dir).unwrap();
+    for (fixture, uv_set) in [
+        ("Suzanne/glTF/Suzanne.gltf", 1),
+        ("Box/glTF-Binary/Box.glb", 0),
+    ] {
+        let Some(model) = gltf_fixture(fixture) else {
+            continue;
+        };
+        let out = dir.join(format!("out-{uv_set}.glb"));
+        let output = barytex()
+            .args(["unwrap", model.to_str().unwrap(), "-o"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(
+            output.status.success(),
+            "{fixture}: {}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        // One file holds the JSON and every new array: no .bin beside it.
+        assert!(!dir.join(format!("out-{uv_set}-uv.bin")).exists());
+        let bytes = std::fs::read(&out).unwrap();
+        assert_eq!(&bytes[..4], b"glTF");
+        assert_eq!(
+            u32::from_le_bytes(bytes[8..12].try_into().unwrap()) as usize,
+            bytes.len()
+        );
+        let before = only_primitive(&model);
+        let after = only_primitive(&out);
+        let uvs = if uv_set == 1 {
+            after.tex_coords1.as_ref()
+        } else {
+            after.tex_coords0.as_ref()
+        };
+        assert_eq!(uvs.unwrap().len(), after.positions.len(), "{fixture}");
+        assert_eq!(after.triangles.len(), before.triangles.len(), "{fixture}");
+        if uv_set == 1 {
+            // The old uvs of a .gltf input still load, bit for bit (their buffer moved to 1).
+            let old = |p: &Primitive| p.tex_coords0.clone().unwrap();
+            assert_eq!(old(&before).len(), before.positions.len());
+            assert!(old(&after).iter().all(|uv| old(&before).contains(uv)));
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
 fn a_glb_unwraps_with_its_binary_chunk_written_out() {
     let Some(model) = gltf_fixture("Box/glTF-Binary/Box.glb") else {
         return;
@@ -227,7 +276,7 @@ fn bad_unwrap_input_is_an_error_not_a_panic() {
     ];
     if let Some(model) = gltf_fixture("Suzanne/glTF/Suzanne.gltf") {
         let m = model.display().to_string();
-        let o = dir.join("o.glb").display().to_string();
+        let o = dir.join("o.obj").display().to_string();
         cases.push((
             vec!["unwrap".into(), m.clone(), "-o".into(), o],
             "writes .gltf",

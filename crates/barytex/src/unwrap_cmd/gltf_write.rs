@@ -7,6 +7,11 @@
 //! cameras, animations, extensions): the original accessors and buffers are kept, so whatever
 //! else points at them still finds them. A GLB's binary chunk is written out as the start of the
 //! new `<stem>-uv.bin` (its buffer 0), since a `.gltf` cannot embed it.
+//!
+//! An output named `.glb` is one GLB file instead (glTF 2.0 §4.4, "Binary glTF Layout"): the new
+//! arrays go into its binary chunk, which is buffer 0 — after the input GLB's own binary chunk,
+//! or, for a `.gltf` input, as a new buffer 0 with every buffer view's index moved up by one.
+//! Images and other buffers the model references by URI stay separate files.
 
 use std::path::{Path, PathBuf};
 
@@ -157,8 +162,9 @@ fn rebase_uris(
     Ok(())
 }
 
-/// Writes `out` (a `.gltf`) and its `.bin`, and copies the files it references that its folder
-/// cannot reach (see [`uri::place`]); returns the `.bin`'s path and the copies. `model_dir` and
+/// Writes `out` (a `.gltf` and its `.bin`, or one `.glb`), and copies the files it references
+/// that its folder cannot reach (see [`uri::place`]); returns the path of the file holding the
+/// new arrays (the `.bin`, or the `.glb` itself) and the copies. `model_dir` and
 /// the output's folder must be absolute and canonical; `roots` are the `--allow-dir` folders.
 pub(crate) fn write(
     mut doc: Value,
@@ -173,6 +179,9 @@ pub(crate) fn write(
         return Err("the glTF JSON is not an object".to_owned());
     }
     let out_dir = out.parent().unwrap_or_else(|| Path::new("."));
+    let glb_out = out
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("glb"));
     let mut copies = Vec::new();
     for key in ["buffers", "images"] {
         rebase_uris(&mut doc, key, (model_dir, out_dir, roots), &mut copies)?;
@@ -190,7 +199,7 @@ pub(crate) fn write(
             b.iter()
                 .any(|b| b.get("uri").and_then(Value::as_str) == Some(&bin_uri))
         });
-    if clash {
+    if clash && !glb_out {
         return Err(format!(
             "{}: the model already uses a buffer of that name; choose another -o",
             bin_path.display()
@@ -214,7 +223,8 @@ pub(crate) fn write(
             }
             _ => Vec::new(),
         },
-        buffer: if glb_buffer {
+        // A new buffer goes last in a .gltf, first in a .glb (moved there below).
+        buffer: if glb_buffer || glb_out {
             0
         } else {
             array_len(&doc, "buffers")
@@ -303,6 +313,7 @@ pub(crate) fn write(
         bin,
         views,
         accessors,
+        first_view,
         ..
     } = builder;
     let byte_length = bin.len();
@@ -311,7 +322,28 @@ pub(crate) fn write(
         .ok_or("the glTF JSON is not an object")?;
     push_all(root, "bufferViews", views);
     push_all(root, "accessors", accessors);
-    if glb_buffer {
+    if glb_out {
+        if glb_buffer {
+            root["buffers"][0]["byteLength"] = json!(byte_length);
+        } else {
+            // The new buffer becomes buffer 0, the binary chunk: every older view moves up.
+            let old_views = root
+                .get_mut("bufferViews")
+                .and_then(Value::as_array_mut)
+                .map_or(&mut [][..], |v| &mut v[..first_view]);
+            for view in old_views {
+                if let Some(b) = view.get("buffer").and_then(Value::as_u64) {
+                    view["buffer"] = json!(b + 1);
+                }
+            }
+            let buffers = root
+                .entry("buffers")
+                .or_insert_with(|| Value::Array(Vec::new()));
+            if let Some(list) = buffers.as_array_mut() {
+                list.insert(0, json!({ "byteLength": byte_length }));
+            }
+        }
+    } else if glb_buffer {
         root["buffers"][0]["uri"] = json!(bin_uri);
         root["buffers"][0]["byteLength"] = json!(byte_length);
     } else {
@@ -321,8 +353,14 @@ pub(crate) fn write(
             vec![json!({"uri": bin_uri, "byteLength": byte_length})],
         );
     }
-    let text = serde_json::to_string_pretty(&doc).map_err(|e| format!("JSON: {e}"))?;
-    std::fs::write(&bin_path, &bin).map_err(|e| format!("{}: {e}", bin_path.display()))?;
+    let (text, bin_path) = if glb_out {
+        let json = serde_json::to_vec(&doc).map_err(|e| format!("JSON: {e}"))?;
+        (glb(&json, &bin)?, out.to_path_buf())
+    } else {
+        let text = serde_json::to_vec_pretty(&doc).map_err(|e| format!("JSON: {e}"))?;
+        std::fs::write(&bin_path, &bin).map_err(|e| format!("{}: {e}", bin_path.display()))?;
+        (text, bin_path)
+    };
     let mut copied = Vec::new();
     for (from, to) in copies {
         if std::fs::canonicalize(&to).is_ok_and(|t| t == from) {
@@ -337,6 +375,28 @@ pub(crate) fn write(
     }
     std::fs::write(out, text).map_err(|e| format!("{}: {e}", out.display()))?;
     Ok((bin_path, copied))
+}
+
+/// A GLB file (glTF 2.0 §4.4): the 12-byte header, the JSON chunk padded with spaces and the
+/// binary chunk padded with zeros, each to a multiple of 4 bytes.
+fn glb(json: &[u8], bin: &[u8]) -> Result<Vec<u8>, String> {
+    let padded = |n: usize| n.next_multiple_of(4);
+    let total = 12 + 8 + padded(json.len()) + 8 + padded(bin.len());
+    let too_big = || format!("the GLB would be {total} bytes, over the format's 4 GiB");
+    let length = |n: usize| u32::try_from(n).map_err(|_| too_big());
+    let mut out = Vec::with_capacity(total);
+    out.extend_from_slice(b"glTF");
+    out.extend_from_slice(&2u32.to_le_bytes());
+    out.extend_from_slice(&length(total)?.to_le_bytes());
+    out.extend_from_slice(&length(padded(json.len()))?.to_le_bytes());
+    out.extend_from_slice(b"JSON");
+    out.extend_from_slice(json);
+    out.resize(out.len() + padded(json.len()) - json.len(), b' ');
+    out.extend_from_slice(&length(padded(bin.len()))?.to_le_bytes());
+    out.extend_from_slice(b"BIN\0");
+    out.extend_from_slice(bin);
+    out.resize(total, 0);
+    Ok(out)
 }
 
 /// The largest file copied beside the output: what the loader accepts for one buffer or image.
