@@ -300,3 +300,22 @@ proptest! {
         }
     }
 }
+
+#[cfg(feature = "parallel")]
+#[test]
+fn charts_do_not_depend_on_the_number_of_threads() {
+    let mesh = torus(32, 16);
+    let run = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("a pool")
+            .install(|| {
+                barytex_unwrap::parameterize(&mesh, &barytex_unwrap::ParamOptions::default())
+            })
+            .expect("unwrapped")
+    };
+    let one = run(1);
+    assert!(one.len() > 1, "a torus needs seams");
+    assert_eq!(one, run(3));
+}

@@ -67,8 +67,6 @@ impl Context<'_> {
     pub(super) fn chart(
         &self,
         region: &[u32],
-        mark: &[u32],
-        stamp: u32,
     ) -> Result<Option<(Chart, ChartReport)>, UnwrapError> {
         // Chart vertices: corners joined across the region's interior edges.
         let m = region.len();
@@ -81,10 +79,10 @@ impl Context<'_> {
         for (i, &face) in region.iter().enumerate() {
             for k in 0..3 {
                 let t = self.twins[3 * face as usize + k];
-                if t == NONE || mark[(t / 3) as usize] != stamp {
+                let Some(&j) = (t != NONE).then(|| local.get(&(t / 3))).flatten() else {
                     continue;
-                }
-                let j = local[&(t / 3)] as usize;
+                };
+                let j = j as usize;
                 let kt = (t % 3) as usize;
                 // This half-edge runs corner k → k+1; its twin runs corner kt → kt+1 the other way.
                 let pairs = [

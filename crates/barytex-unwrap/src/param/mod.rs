@@ -11,10 +11,12 @@ pub use options::{Method, NonManifold, ParamOptions};
 pub use report::{ChartReport, Parameterization};
 
 use glam::DVec3;
+#[cfg(feature = "parallel")]
+use rayon::prelude::*;
 
 use crate::geometry::is_degenerate;
 use crate::segment::{bisect, grow_charts, smooth_seams};
-use crate::topology::{HalfEdgeMesh, NONE, weld_positions};
+use crate::topology::{HalfEdgeMesh, weld_positions};
 use crate::{Chart, UnwrapError, UnwrapMesh};
 use chart::Context;
 use degenerate::{degenerate_chart, mean_edge_length};
@@ -69,6 +71,14 @@ use options::validate;
 /// vertex; [`UnwrapError::OutOfMemory`].
 pub fn parameterize(mesh: &UnwrapMesh, options: &ParamOptions) -> Result<Vec<Chart>, UnwrapError> {
     parameterize_with_report(mesh, options).map(|p| p.charts)
+}
+
+/// What became of one region in a round of [`parameterize_with_report`].
+enum Outcome {
+    /// A chart and its report.
+    Chart((Chart, ChartReport)),
+    /// The region split in two, for the next round.
+    Split(Vec<Vec<u32>>),
 }
 
 /// The power of two that brings the mesh's extent near 1, so squares of coordinates neither
@@ -137,8 +147,6 @@ pub fn parameterize_with_report(
         non_manifold_half_edges: non_manifold,
         ..Parameterization::default()
     };
-    let mut mark = vec![NONE; f];
-    let mut stamp = 0u32;
     let ctx = Context {
         mesh,
         positions: &positions,
@@ -147,19 +155,33 @@ pub fn parameterize_with_report(
         scale,
         options,
     };
-    while let Some(region) = work.pop() {
-        stamp = stamp.wrapping_add(1);
-        for &face in &region {
-            mark[face as usize] = stamp;
-        }
-        match ctx.chart(&region, &mark, stamp)? {
-            Some((chart, report)) => {
-                out.charts.push(chart);
-                out.reports.push(report);
-            }
-            None => {
-                out.splits += 1;
-                work.extend(bisect(&region, &twins, &mark, stamp));
+    // Regions are independent: each round flattens all of them in parallel, and the ones that
+    // fail are split for the next round. The results keep the regions' order, so the charts do
+    // not depend on the number of threads.
+    while !work.is_empty() {
+        #[cfg(feature = "parallel")]
+        let regions = work.par_iter();
+        #[cfg(not(feature = "parallel"))]
+        let regions = work.iter();
+        let done: Vec<Result<Outcome, UnwrapError>> = regions
+            .map(|region| {
+                Ok(match ctx.chart(region)? {
+                    Some(chart) => Outcome::Chart(chart),
+                    None => Outcome::Split(bisect(region, &twins)),
+                })
+            })
+            .collect();
+        work = Vec::new();
+        for outcome in done {
+            match outcome? {
+                Outcome::Chart((chart, report)) => {
+                    out.charts.push(chart);
+                    out.reports.push(report);
+                }
+                Outcome::Split(parts) => {
+                    out.splits += 1;
+                    work.extend(parts);
+                }
             }
         }
     }

@@ -94,7 +94,8 @@ pub(crate) fn grow_charts(
 /// connected to the first face and the rest when it is disconnected, otherwise the two halves
 /// nearer (in dual-graph steps) to each of two far-apart faces found by a double breadth-first
 /// sweep. Each part is connected (a breadth-first tree) and non-empty for two or more faces.
-pub(crate) fn bisect(faces: &[u32], twins: &[u32], mark: &[u32], stamp: u32) -> Vec<Vec<u32>> {
+pub(crate) fn bisect(faces: &[u32], twins: &[u32]) -> Vec<Vec<u32>> {
+    let inside: std::collections::HashSet<u32> = faces.iter().copied().collect();
     let bfs = |sources: &[u32]| -> Vec<(u32, u32)> {
         // (face, source label) in visiting order.
         let mut seen = std::collections::HashMap::with_capacity(faces.len());
@@ -110,7 +111,7 @@ pub(crate) fn bisect(faces: &[u32], twins: &[u32], mark: &[u32], stamp: u32) -> 
             order.push((face, label));
             for k in 0..3 {
                 let g = across(twins, 3 * face as usize + k);
-                if g != NONE && mark[g as usize] == stamp && !seen.contains_key(&g) {
+                if g != NONE && inside.contains(&g) && !seen.contains_key(&g) {
                     seen.insert(g, label);
                     queue.push_back(g);
                 }
