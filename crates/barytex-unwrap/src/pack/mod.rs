@@ -41,10 +41,12 @@
 //! # Ok::<(), barytex_unwrap::pack::PackError>(())
 //! ```
 
+mod bitmap;
 mod error;
 mod horizon;
 mod min_area_rect;
 mod options;
+mod raster;
 mod skyline;
 
 use glam::DVec2;
@@ -66,6 +68,9 @@ const MARGIN_TEXELS: f64 = 1.0 / 64.0;
 /// The most charts packed on a horizon too (its search costs `charts × size × chart width`
 /// per attempt).
 const HORIZON_MAX_CHARTS: usize = 256;
+
+/// The most charts packed as raster masks too (each placement searches the atlas bitmap).
+const RASTER_MAX_CHARTS: usize = 512;
 
 /// Bisection steps of the horizon packer's scale, between the boxes' scale and the area bound.
 const HORIZON_BISECTION_STEPS: u32 = 10;
@@ -154,9 +159,38 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
             }
         }
     }
+    // The charts' own area bounds the scale (their boxes' area does not: outlines nest).
+    let surface: f64 = placed.iter().map(|&i| chart_uv_area(&charts[i])).sum();
+    let bound = if surface > 0.0 {
+        (bin_f / surface.sqrt()).min(bin_f / longest)
+    } else {
+        upper
+    };
+    // The best outline packing so far: its scale, chart order and spots.
+    let mut outlined: Option<(f64, Vec<usize>, Vec<horizon::Placed>)> = None;
+    // Rasterized chart masks (xatlas's packer), searched from the boxes' scale up.
+    if placed.len() <= RASTER_MAX_CHARTS && scale > 0.0 {
+        let areas: Vec<f64> = charts.iter().map(chart_uv_area).collect();
+        let mut order = placed.clone();
+        order.sort_by(|&a, &b| areas[b].total_cmp(&areas[a]).then(a.cmp(&b)));
+        if let Some((reached, spots)) = raster::search(
+            &order,
+            charts,
+            &extents,
+            options.size,
+            options.padding,
+            options.rotate,
+            scale,
+            bound,
+            &mut attempts,
+        ) && reached > scale
+        {
+            outlined = Some((reached, order, spots));
+        }
+    }
     // Chart outlines on a horizon (Lévy et al. 2002) when there are few enough charts for its
     // column-by-column search (a parameterization's charts; flat pairs and triangles fill their
-    // boxes anyway); kept when it reaches a larger scale than the boxes did.
+    // boxes anyway); kept when it reaches a larger scale than the boxes and masks did.
     if placed.len() <= HORIZON_MAX_CHARTS && scale > 0.0 {
         let outlines: Vec<[horizon::Outline; 4]> = (0..charts.len())
             .map(|i| {
@@ -168,26 +202,12 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
         // Three orders (largest area, tallest, widest first); the one reaching the largest
         // scale is kept.
         let keys: [fn(DVec2) -> f64; 3] = [|e| e.x * e.y, |e| e.y.min(e.x), |e| e.x.max(e.y)];
-        let orders: Vec<Vec<usize>> = keys
-            .iter()
-            .map(|key| {
-                let mut order = placed.clone();
-                order.sort_by(|&a, &b| key(extents[b]).total_cmp(&key(extents[a])).then(a.cmp(&b)));
-                order
-            })
-            .collect();
-        // The charts' own area bounds the scale (their boxes' area does not: outlines nest).
-        let surface: f64 = placed.iter().map(|&i| chart_uv_area(&charts[i])).sum();
-        let bound = if surface > 0.0 {
-            (bin_f / surface.sqrt()).min(bin_f / longest)
-        } else {
-            upper
-        };
-        let mut best_horizon: Option<(f64, usize, Vec<horizon::Placed>)> = None;
-        for (o, order) in orders.iter().enumerate() {
+        for key in keys {
+            let mut order = placed.clone();
+            order.sort_by(|&a, &b| key(extents[b]).total_cmp(&key(extents[a])).then(a.cmp(&b)));
             let attempt = |scale: f64| {
                 horizon::try_pack(
-                    order,
+                    &order,
                     &outlines,
                     scale,
                     options.size,
@@ -195,7 +215,7 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
                     options.rotate,
                 )
             };
-            let floor = best_horizon.as_ref().map_or(scale, |b| b.0);
+            let floor = outlined.as_ref().map_or(scale, |b| b.0);
             attempts += 1;
             let Some(mut found) = attempt(floor) else {
                 continue;
@@ -210,28 +230,27 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
                     None => high = mid,
                 }
             }
-            if best_horizon.as_ref().is_none_or(|b| reached > b.0) {
-                best_horizon = Some((reached, o, found));
+            if outlined.as_ref().is_none_or(|b| reached > b.0) {
+                outlined = Some((reached, order, found));
             }
         }
-        if let Some((best_scale, o, found)) = best_horizon {
-            let by_area = &orders[o];
-            let size = f64::from(options.size);
-            let mut chart_area = 0.0;
-            for (&i, spot) in by_area.iter().zip(&found) {
-                let e = extents[i];
-                for uv in &mut charts[i].uvs {
-                    let q = horizon::turn(*uv, e, spot.turns) * best_scale;
-                    *uv = (spot.origin + q) / size;
-                }
-                chart_area += chart_uv_area(&charts[i]);
+    }
+    if let Some((best_scale, order, found)) = outlined {
+        let size = f64::from(options.size);
+        let mut chart_area = 0.0;
+        for (&i, spot) in order.iter().zip(&found) {
+            let e = extents[i];
+            for uv in &mut charts[i].uvs {
+                let q = horizon::turn(*uv, e, spot.turns) * best_scale;
+                *uv = (spot.origin + q) / size;
             }
-            return Ok(PackStats {
-                texels_per_unit: best_scale,
-                efficiency: chart_area,
-                attempts,
-            });
+            chart_area += chart_uv_area(&charts[i]);
         }
+        return Ok(PackStats {
+            texels_per_unit: best_scale,
+            efficiency: chart_area,
+            attempts,
+        });
     }
     let size = f64::from(options.size);
     let padding = f64::from(options.padding);

@@ -1,0 +1,323 @@
+//! Raster-mask packing of charts: each chart, in each of its four quarter turns, is rasterized
+//! conservatively into a bitmap of texels, dilated by the padding, and placed in an atlas
+//! bitmap wherever its mask meets no texel of a chart already there — so a chart can sit in
+//! another's hole, under its overhang or between its arms, which neither bounding boxes
+//! (Jylänki 2010) nor a horizon (Lévy et al. 2002, §6) allow.
+//!
+//! This is the packer of xatlas (Jonathan Young's texture atlas library,
+//! <https://github.com/jpcy/xatlas>, `PackCharts`): charts largest first, each at the position
+//! (and turn) that keeps the atlas's bounding square smallest, then lowest, then leftmost.
+//! Unlike xatlas, which packs at one scale and stretches the atlas to the texture, the scale
+//! here is searched (secant steps on the atlas side against the scale, inside a bisection
+//! bracket) so that the square fits the texture exactly at the padding asked for.
+//!
+//! # Exactness of the padding
+//! A chart's texels are every texel that any of its triangles (and points), grown by
+//! [`MARGIN_TEXELS`] on every side, touches — a superset of the texels the chart covers. Its
+//! mask is those texels dilated by a `(2p + 1)²` square (the Chebyshev ball of radius `p`,
+//! the padding). The atlas holds the texels (undilated) of the charts placed; a position is
+//! free when the mask there meets none of them. Two charts' texels are then at least `p + 1`
+//! texel indices apart along one axis, so any two of their points are more than `p` texels
+//! apart — plus twice the margin that rounding uvs to f32 cannot eat. The mask also stays
+//! inside the texture, so a chart's texels are `p` texels from the border.
+//!
+//! # Cost
+//! Each row of a mask is kept as runs of set bits; a run at a candidate position is tested
+//! with one query to the atlas ("the last set texel in this range of this row", a few word
+//! reads, none for a row outside its set span), and a hit moves the candidate right past that
+//! texel at once. The row that failed last is tried first at the next candidate, so most
+//! candidates cost one query.
+
+use glam::DVec2;
+
+use super::MARGIN_TEXELS;
+use super::bitmap::Bitmap;
+use super::horizon::{Placed, turn};
+use crate::Chart;
+
+/// One chart at one scale in one turn.
+#[derive(Clone, Debug)]
+struct Shape {
+    /// The chart's texels, placed `padding` texels right of and above the mask's corner.
+    texels: Bitmap,
+    /// The mask's width and height (the texels' plus twice the padding).
+    w: usize,
+    h: usize,
+    /// The mask's rows as runs `(first, last)` of set bits: row `r` is
+    /// `runs[starts[r]..starts[r + 1]]`.
+    runs: Vec<(u32, u32)>,
+    starts: Vec<u32>,
+}
+
+impl Shape {
+    fn row(&self, r: usize) -> &[(u32, u32)] {
+        &self.runs[self.starts[r] as usize..self.starts[r + 1] as usize]
+    }
+}
+
+/// Sets every texel of `texels` that the triangle `t` (texel coordinates), grown by `m` on every
+/// side, has a point in (texel `(i, j)` is `[i, i + 1) × [j, j + 1)`).
+fn fill_triangle(texels: &mut Bitmap, t: [DVec2; 3], m: f64) {
+    let (w, h) = (texels.width(), texels.height());
+    let ylo = t[0].y.min(t[1].y).min(t[2].y) - m;
+    let yhi = t[0].y.max(t[1].y).max(t[2].y) + m;
+    let Some((r0, r1)) = cells(ylo, yhi, h) else {
+        return;
+    };
+    for r in r0..=r1 {
+        // The triangle's points whose grown square reaches row r lie in the slab [a, b]; the
+        // clipped polygon's corners are corners inside the slab and edges crossing its sides.
+        let (a, b) = (r as f64 - m, r as f64 + 1.0 + m);
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for i in 0..3 {
+            let (p, q) = (t[i], t[(i + 1) % 3]);
+            if (a..=b).contains(&p.y) {
+                (lo, hi) = (lo.min(p.x), hi.max(p.x));
+            }
+            for level in [a, b] {
+                if (p.y - level) * (q.y - level) < 0.0 {
+                    let x = p.x + (level - p.y) / (q.y - p.y) * (q.x - p.x);
+                    (lo, hi) = (lo.min(x), hi.max(x));
+                }
+            }
+        }
+        if let Some((c0, c1)) = cells(lo - m, hi + m, w) {
+            texels.set_span(r, c0, c1);
+        }
+    }
+}
+
+/// The texels `floor(lo)..=floor(hi)` clipped to `0..n`, or `None` when none is left (or the
+/// bounds are not numbers).
+fn cells(lo: f64, hi: f64, n: usize) -> Option<(usize, usize)> {
+    if !(lo <= hi) || n == 0 || hi < 0.0 || lo >= n as f64 {
+        return None;
+    }
+    let first = lo.floor().max(0.0) as usize;
+    let last = (hi.floor() as usize).min(n - 1);
+    Some((first, last))
+}
+
+/// A chart (uvs from the origin, box extent `e`) turned `k` quarter turns, scaled by `scale`,
+/// rasterized and padded; `None` when its mask is wider or taller than `limit` texels.
+fn rasterize(chart: &Chart, e: DVec2, k: u8, scale: f64, padding: usize, limit: usize) -> Option<Shape> {
+    let m = MARGIN_TEXELS;
+    let turned = if k % 2 == 1 { DVec2::new(e.y, e.x) } else { e };
+    let side = |x: f64| {
+        let t = (x * scale + 2.0 * m).ceil().max(1.0);
+        (t.is_finite() && t + 2.0 * padding as f64 <= limit as f64).then_some(t as usize)
+    };
+    let (tw, th) = (side(turned.x)?, side(turned.y)?);
+    let mut texels = Bitmap::new(tw, th)?;
+    let map = |p: DVec2| turn(p, e, k) * scale + DVec2::splat(m);
+    for t in &chart.triangles {
+        let [a, b, c] = t.map(|i| chart.uvs.get(i as usize).map(|&p| map(p)));
+        if let (Some(a), Some(b), Some(c)) = (a, b, c) {
+            fill_triangle(&mut texels, [a, b, c], m);
+        }
+    }
+    // Points too (a vertex in no triangle still gets a uv that must stay inside).
+    for &p in &chart.uvs {
+        let q = map(p);
+        if let (Some((c0, c1)), Some((r0, r1))) = (cells(q.x - m, q.x + m, tw), cells(q.y - m, q.y + m, th)) {
+            for r in r0..=r1 {
+                texels.set_span(r, c0, c1);
+            }
+        }
+    }
+    let mask = texels.dilated(padding)?;
+    let (w, h) = (mask.width(), mask.height());
+    let mut runs = Vec::new();
+    let mut starts = Vec::with_capacity(h + 1);
+    let mut row = Vec::new();
+    for r in 0..h {
+        starts.push(runs.len() as u32);
+        mask.runs(r, &mut row);
+        runs.extend_from_slice(&row);
+    }
+    starts.push(runs.len() as u32);
+    Some(Shape {
+        texels,
+        w,
+        h,
+        runs,
+        starts,
+    })
+}
+
+/// The first `x <= xmax` where `shape`'s mask at `(x, y)` meets no set texel of `atlas`, whose
+/// rows from `filled` up are empty; `hint` is the mask row that failed last.
+fn first_fit(
+    atlas: &Bitmap,
+    shape: &Shape,
+    y: usize,
+    xmax: usize,
+    filled: usize,
+    hint: &mut usize,
+) -> Option<usize> {
+    // Rows of the mask that land on empty atlas rows never collide.
+    let live = filled.saturating_sub(y).min(shape.h);
+    let mut x = 0;
+    'candidates: while x <= xmax {
+        for i in 0..live {
+            let r = (*hint + i) % live;
+            for &(a, b) in shape.row(r) {
+                let (a, b) = (a as usize, b as usize);
+                if let Some(c) = atlas.last_set_in(y + r, x + a, x + b) {
+                    // Every x' up to c - a puts this run over texel c.
+                    x = c + 1 - a;
+                    *hint = r;
+                    continue 'candidates;
+                }
+            }
+        }
+        return Some(x);
+    }
+    None
+}
+
+/// What one packing at one scale gave: where each chart went (in `order`), and the side of
+/// the square the masks fill (texture-sized or less when they fit the texture).
+#[derive(Clone, Debug)]
+pub(crate) struct Packed {
+    pub(crate) side: usize,
+    pub(crate) placed: Vec<Placed>,
+}
+
+/// Packs the charts `order` at `scale` into a `limit`-texel square bitmap, each chart where the
+/// square they fill stays smallest, then lowest, then leftmost; `None` when one does not fit
+/// the limit (or a bitmap would be too large).
+pub(crate) fn try_pack(
+    order: &[usize],
+    charts: &[Chart],
+    extents: &[DVec2],
+    scale: f64,
+    padding: u32,
+    turns: bool,
+    limit: usize,
+) -> Option<Packed> {
+    let p = padding as usize;
+    let mut atlas = Bitmap::new(limit, limit)?;
+    let (mut width, mut height) = (0usize, 0usize);
+    let mut placed = Vec::with_capacity(order.len());
+    for &i in order {
+        let shapes: Vec<Option<Shape>> = (0..if turns { 4 } else { 1 })
+            .map(|k| rasterize(&charts[i], extents[i], k, scale, p, limit))
+            .collect();
+        // (square side, y, x, turn) of the best spot so far.
+        let mut best: Option<(usize, usize, usize, usize)> = None;
+        for (k, shape) in shapes.iter().enumerate() {
+            let Some(shape) = shape else {
+                continue;
+            };
+            let mut hint = 0;
+            for y in 0..=(limit - shape.h) {
+                let tall = height.max(y + shape.h);
+                let least = width.max(tall).max(shape.w);
+                let mut xmax = limit - shape.w;
+                if let Some((side, by, _, _)) = best {
+                    // The least square only grows with y; a tie loses to the lower spot.
+                    if least > side || (least == side && y > by) {
+                        break;
+                    }
+                    xmax = xmax.min(side - shape.w);
+                }
+                if let Some(x) = first_fit(&atlas, shape, y, xmax, height, &mut hint) {
+                    let side = least.max(x + shape.w);
+                    if best.is_none_or(|b| (side, y, x) < (b.0, b.1, b.2)) {
+                        best = Some((side, y, x, k));
+                    }
+                }
+            }
+        }
+        let (_, y, x, k) = best?;
+        let shape = shapes[k].as_ref()?;
+        atlas.blit(&shape.texels, x + p, y + p);
+        width = width.max(x + shape.w);
+        height = height.max(y + shape.h);
+        placed.push(Placed {
+            turns: k as u8,
+            origin: DVec2::new((x + p) as f64, (y + p) as f64) + MARGIN_TEXELS,
+        });
+    }
+    Some(Packed {
+        side: width.max(height),
+        placed,
+    })
+}
+
+/// The most packings one scale search runs.
+const SEARCH_ATTEMPTS: u32 = 8;
+
+/// The search stops once the bracket is this narrow (relative to its low end).
+const SEARCH_TOLERANCE: f64 = 1e-3;
+
+/// The largest atlas bitmap side (32 MiB of bits); textures over half of it are not packed
+/// here.
+pub(crate) const MAX_LIMIT: usize = 1 << 14;
+
+/// Searches the largest scale, up to `ceiling`, at which [`try_pack`] fits the charts into a
+/// `size`-texel square, starting at `start` (a scale another packer reached): secant steps on
+/// the filled square's side against the scale, kept inside a shrinking bracket (bisection
+/// when a step leaves it). Each attempt packs into a bitmap twice the texture's side, so a
+/// scale that is too large still says by how much. Returns the best scale found and its
+/// spots (in `order`), or `None`; `attempts` counts the packings.
+pub(crate) fn search(
+    order: &[usize],
+    charts: &[Chart],
+    extents: &[DVec2],
+    size: u32,
+    padding: u32,
+    turns: bool,
+    start: f64,
+    ceiling: f64,
+    attempts: &mut u32,
+) -> Option<(f64, Vec<Placed>)> {
+    let limit = 2 * size as usize;
+    if limit > MAX_LIMIT || !(start > 0.0) || !(ceiling.is_finite()) {
+        return None;
+    }
+    let target = f64::from(size);
+    let (mut lo, mut hi) = (0.0, ceiling.max(start));
+    let mut best: Option<(f64, Vec<Placed>)> = None;
+    let mut previous: Option<(f64, f64)> = None;
+    let mut s = start;
+    for _ in 0..SEARCH_ATTEMPTS {
+        *attempts += 1;
+        let side = match try_pack(order, charts, extents, s, padding, turns, limit) {
+            Some(packed) => {
+                let side = packed.side as f64;
+                if side <= target {
+                    lo = s;
+                    if best.as_ref().is_none_or(|b| s > b.0) {
+                        best = Some((s, packed.placed));
+                    }
+                } else {
+                    hi = s;
+                }
+                Some(side)
+            }
+            None => {
+                hi = s;
+                None
+            }
+        };
+        if hi <= lo * (1.0 + SEARCH_TOLERANCE) {
+            break;
+        }
+        let step = match (previous, side) {
+            (Some((s0, e0)), Some(e1)) if e1 != e0 => s + (target - e1) * (s - s0) / (e1 - e0),
+            (_, Some(e1)) if e1 > 0.0 => s * target / e1,
+            _ => f64::NAN,
+        };
+        if let Some(e1) = side {
+            previous = Some((s, e1));
+        }
+        s = if step.is_finite() && step > lo && step < hi {
+            step
+        } else {
+            0.5 * (lo + hi)
+        };
+    }
+    best
+}
