@@ -66,10 +66,12 @@ impl Bitmap {
         let x1 = x1.min(self.width - 1);
         let row = &mut self.words[y * self.stride..(y + 1) * self.stride];
         let (w0, w1) = (x0 / 64, x1 / 64);
-        for (w, word) in row.iter_mut().enumerate().take(w1 + 1).skip(w0) {
-            let lo = if w == w0 { x0 % 64 } else { 0 };
-            let hi = if w == w1 { x1 % 64 } else { 63 };
-            *word |= word_mask(lo, hi);
+        if w0 == w1 {
+            row[w0] |= word_mask(x0 % 64, x1 % 64);
+        } else {
+            row[w0] |= word_mask(x0 % 64, 63);
+            row[w0 + 1..w1].fill(u64::MAX);
+            row[w1] |= word_mask(0, x1 % 64);
         }
         let span = &mut self.spans[y];
         *span = (span.0.min(x0), span.1.max(x1));
@@ -78,7 +80,9 @@ impl Bitmap {
     /// Whether bit `(x, y)` is set (`false` outside).
     #[cfg(test)]
     pub(crate) fn get(&self, x: usize, y: usize) -> bool {
-        x < self.width && y < self.height && self.words[y * self.stride + x / 64] >> (x % 64) & 1 == 1
+        x < self.width
+            && y < self.height
+            && self.words[y * self.stride + x / 64] >> (x % 64) & 1 == 1
     }
 
     /// The first and last set bit of row `y`, or `None` when it is empty.
@@ -87,6 +91,7 @@ impl Bitmap {
     }
 
     /// The last set bit of row `y` in `x0..=x1`, or `None` when none is (or the row is outside).
+    #[inline]
     pub(crate) fn last_set_in(&self, y: usize, x0: usize, x1: usize) -> Option<usize> {
         let (first, last) = self.span(y)?;
         let x1 = x1.min(last);
@@ -96,6 +101,10 @@ impl Bitmap {
         let x0 = x0.max(first);
         let row = &self.words[y * self.stride..(y + 1) * self.stride];
         let (w0, w1) = (x0 / 64, x1 / 64);
+        if w0 == w1 {
+            let bits = row[w0] & word_mask(x0 % 64, x1 % 64);
+            return (bits != 0).then(|| w0 * 64 + 63 - bits.leading_zeros() as usize);
+        }
         for w in (w0..=w1).rev() {
             let lo = if w == w0 { x0 % 64 } else { 0 };
             let hi = if w == w1 { x1 % 64 } else { 63 };
@@ -166,6 +175,26 @@ impl Bitmap {
         Some(out)
     }
 
+    /// This bitmap turned by half a turn: bit `(x, y)` goes to `(width − 1 − x, height − 1 − y)`.
+    pub(crate) fn half_turned(&self) -> Self {
+        let mut out = Self {
+            width: self.width,
+            height: self.height,
+            stride: self.stride,
+            words: vec![0; self.words.len()],
+            spans: vec![EMPTY; self.height],
+        };
+        let mut runs = Vec::new();
+        for y in 0..self.height {
+            self.runs(y, &mut runs);
+            for &(a, b) in &runs {
+                let (a, b) = (a as usize, b as usize);
+                out.set_span(self.height - 1 - y, self.width - 1 - b, self.width - 1 - a);
+            }
+        }
+        out
+    }
+
     /// Sets every set bit of `other` at offset `(x, y)` here (bits falling outside are dropped).
     pub(crate) fn blit(&mut self, other: &Bitmap, x: usize, y: usize) {
         let mut runs = Vec::new();
@@ -189,10 +218,7 @@ mod tests {
         b.set_span(1, 100, 100);
         b.set_span(1, 128, 199);
         for x in 0..200 {
-            assert_eq!(
-                b.get(x, 1),
-                (3..=70).contains(&x) || x == 100 || x >= 128
-            );
+            assert_eq!(b.get(x, 1), (3..=70).contains(&x) || x == 100 || x >= 128);
         }
         let mut runs = Vec::new();
         b.runs(1, &mut runs);
@@ -217,8 +243,23 @@ mod tests {
         assert_eq!((d.width(), d.height()), (74, 9));
         for y in 0..9 {
             for x in 0..74 {
-                let near = |cx: usize, cy: usize| x.abs_diff(cx + 2) <= 2 && y.abs_diff(cy + 2) <= 2;
+                let near =
+                    |cx: usize, cy: usize| x.abs_diff(cx + 2) <= 2 && y.abs_diff(cy + 2) <= 2;
                 assert_eq!(d.get(x, y), near(66, 2) || near(0, 0), "({x}, {y})");
+            }
+        }
+    }
+
+    #[test]
+    fn a_half_turn_moves_every_bit() {
+        let mut b = Bitmap::new(130, 4).expect("small");
+        b.set_span(0, 0, 2);
+        b.set_span(3, 60, 129);
+        b.set_span(1, 64, 64);
+        let t = b.half_turned();
+        for y in 0..4 {
+            for x in 0..130 {
+                assert_eq!(t.get(x, y), b.get(129 - x, 3 - y), "({x}, {y})");
             }
         }
     }

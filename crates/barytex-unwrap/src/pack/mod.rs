@@ -72,6 +72,9 @@ const HORIZON_MAX_CHARTS: usize = 256;
 /// The most charts packed as raster masks too (each placement searches the atlas bitmap).
 const RASTER_MAX_CHARTS: usize = 512;
 
+/// The share of the square the charts' area is guessed to cover when the raster search starts.
+const RASTER_START_EFFICIENCY: f64 = 0.55;
+
 /// Bisection steps of the horizon packer's scale, between the boxes' scale and the area bound.
 const HORIZON_BISECTION_STEPS: u32 = 10;
 
@@ -171,6 +174,15 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
     // Rasterized chart masks (xatlas's packer), searched from the boxes' scale up.
     if placed.len() <= RASTER_MAX_CHARTS && scale > 0.0 {
         let areas: Vec<f64> = charts.iter().map(chart_uv_area).collect();
+        // Start where the charts would cover a typical share of the square (the search's
+        // secant steps correct a poor guess), never below the boxes' scale.
+        let start = if surface > 0.0 {
+            (f64::from(options.size) * (RASTER_START_EFFICIENCY / surface).sqrt())
+                .min(bound)
+                .max(scale)
+        } else {
+            scale
+        };
         let mut order = placed.clone();
         order.sort_by(|&a, &b| areas[b].total_cmp(&areas[a]).then(a.cmp(&b)));
         if let Some((reached, spots)) = raster::search(
@@ -180,7 +192,7 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
             options.size,
             options.padding,
             options.rotate,
-            scale,
+            start,
             bound,
             &mut attempts,
         ) && reached > scale

@@ -47,11 +47,44 @@ struct Shape {
     /// `runs[starts[r]..starts[r + 1]]`.
     runs: Vec<(u32, u32)>,
     starts: Vec<u32>,
+    /// Per mask row, its longest run's length (0 for an empty row).
+    longest: Vec<u32>,
+    /// Where the chart's turned frame sits in its texels, less the margin: zero for a
+    /// rasterized turn, the texels' slack past the chart's box for a half-turned bitmap.
+    shift: DVec2,
 }
 
 impl Shape {
     fn row(&self, r: usize) -> &[(u32, u32)] {
         &self.runs[self.starts[r] as usize..self.starts[r + 1] as usize]
+    }
+
+    /// This shape half a turn further, from its bitmaps (cheaper than rasterizing again, and
+    /// exact: the texels of a half-turned chart are the half-turned texels, the chart moved by
+    /// the texels' slack past its box, `slack`).
+    fn half_turned(&self, slack: DVec2) -> Self {
+        let (w, h) = (self.w, self.h);
+        let mut runs = Vec::with_capacity(self.runs.len());
+        let mut starts = Vec::with_capacity(h + 1);
+        for r in (0..h).rev() {
+            starts.push(runs.len() as u32);
+            runs.extend(
+                self.row(r)
+                    .iter()
+                    .rev()
+                    .map(|&(a, b)| (w as u32 - 1 - b, w as u32 - 1 - a)),
+            );
+        }
+        starts.push(runs.len() as u32);
+        Self {
+            texels: self.texels.half_turned(),
+            w,
+            h,
+            runs,
+            starts,
+            longest: self.longest.iter().rev().copied().collect(),
+            shift: slack,
+        }
     }
 }
 
@@ -93,14 +126,49 @@ fn cells(lo: f64, hi: f64, n: usize) -> Option<(usize, usize)> {
     if !(lo <= hi) || n == 0 || hi < 0.0 || lo >= n as f64 {
         return None;
     }
-    let first = lo.floor().max(0.0) as usize;
-    let last = (hi.floor() as usize).min(n - 1);
+    // Truncation is the floor for these non-negative numbers (and no libm call).
+    let first = lo.max(0.0) as usize;
+    let last = (hi as usize).min(n - 1);
     Some((first, last))
+}
+
+/// The chart's four quarter turns (one when `turns` is off): turns 0 and 1 rasterized, 2 and 3
+/// their half turns; `None` for a turn whose mask is larger than `limit` texels.
+fn shapes(
+    chart: &Chart,
+    e: DVec2,
+    scale: f64,
+    padding: usize,
+    limit: usize,
+    turns: bool,
+) -> Vec<Option<Shape>> {
+    if !turns {
+        return vec![rasterize(chart, e, 0, scale, padding, limit)];
+    }
+    let [a, b] = [0, 1].map(|k| rasterize(chart, e, k, scale, padding, limit));
+    // The texels' slack past the turned box, which a half turn moves the chart by.
+    let slack = |s: &Shape, x: f64, y: f64| {
+        let m = 2.0 * MARGIN_TEXELS;
+        DVec2::new(
+            s.texels.width() as f64 - (x * scale + m),
+            s.texels.height() as f64 - (y * scale + m),
+        )
+    };
+    let c = a.as_ref().map(|s| s.half_turned(slack(s, e.x, e.y)));
+    let d = b.as_ref().map(|s| s.half_turned(slack(s, e.y, e.x)));
+    vec![a, b, c, d]
 }
 
 /// A chart (uvs from the origin, box extent `e`) turned `k` quarter turns, scaled by `scale`,
 /// rasterized and padded; `None` when its mask is wider or taller than `limit` texels.
-fn rasterize(chart: &Chart, e: DVec2, k: u8, scale: f64, padding: usize, limit: usize) -> Option<Shape> {
+fn rasterize(
+    chart: &Chart,
+    e: DVec2,
+    k: u8,
+    scale: f64,
+    padding: usize,
+    limit: usize,
+) -> Option<Shape> {
     let m = MARGIN_TEXELS;
     let turned = if k % 2 == 1 { DVec2::new(e.y, e.x) } else { e };
     let side = |x: f64| {
@@ -119,7 +187,9 @@ fn rasterize(chart: &Chart, e: DVec2, k: u8, scale: f64, padding: usize, limit: 
     // Points too (a vertex in no triangle still gets a uv that must stay inside).
     for &p in &chart.uvs {
         let q = map(p);
-        if let (Some((c0, c1)), Some((r0, r1))) = (cells(q.x - m, q.x + m, tw), cells(q.y - m, q.y + m, th)) {
+        if let (Some((c0, c1)), Some((r0, r1))) =
+            (cells(q.x - m, q.x + m, tw), cells(q.y - m, q.y + m, th))
+        {
             for r in r0..=r1 {
                 texels.set_span(r, c0, c1);
             }
@@ -129,11 +199,13 @@ fn rasterize(chart: &Chart, e: DVec2, k: u8, scale: f64, padding: usize, limit: 
     let (w, h) = (mask.width(), mask.height());
     let mut runs = Vec::new();
     let mut starts = Vec::with_capacity(h + 1);
+    let mut longest = Vec::with_capacity(h);
     let mut row = Vec::new();
     for r in 0..h {
         starts.push(runs.len() as u32);
         mask.runs(r, &mut row);
         runs.extend_from_slice(&row);
+        longest.push(row.iter().map(|&(a, b)| b - a + 1).max().unwrap_or(0));
     }
     starts.push(runs.len() as u32);
     Some(Shape {
@@ -142,13 +214,17 @@ fn rasterize(chart: &Chart, e: DVec2, k: u8, scale: f64, padding: usize, limit: 
         h,
         runs,
         starts,
+        longest,
+        shift: DVec2::ZERO,
     })
 }
 
 /// The first `x <= xmax` where `shape`'s mask at `(x, y)` meets no set texel of `atlas`, whose
-/// rows from `filled` up are empty; `hint` is the mask row that failed last.
+/// rows from `filled` up are empty and whose rows have `gaps` (see [`Gaps`]); `hint` is the
+/// mask row that failed last.
 fn first_fit(
     atlas: &Bitmap,
+    gaps: &[Gaps],
     shape: &Shape,
     y: usize,
     xmax: usize,
@@ -157,10 +233,25 @@ fn first_fit(
 ) -> Option<usize> {
     // Rows of the mask that land on empty atlas rows never collide.
     let live = filled.saturating_sub(y).min(shape.h);
+    // A mask row longer than every clear run of its atlas row fits nowhere on this row; the
+    // row that refused last is asked first.
+    let end = (xmax + shape.w) as u32;
+    let refuses = |r: usize| shape.longest[r] > gaps[y + r].room(end);
+    if *hint < live && refuses(*hint) {
+        return None;
+    }
+    if let Some(r) = (0..live).find(|&r| refuses(r)) {
+        *hint = r;
+        return None;
+    }
+    if *hint >= live {
+        *hint = 0;
+    }
     let mut x = 0;
     'candidates: while x <= xmax {
-        for i in 0..live {
-            let r = (*hint + i) % live;
+        // The hinted row first, then the others in turn.
+        let (first, rest) = (*hint..live, 0..*hint);
+        for r in first.chain(rest) {
             for &(a, b) in shape.row(r) {
                 let (a, b) = (a as usize, b as usize);
                 if let Some(c) = atlas.last_set_in(y + r, x + a, x + b) {
@@ -174,6 +265,32 @@ fn first_fit(
         return Some(x);
     }
     None
+}
+
+/// The clear runs of an atlas row: the longest one before its last set bit, and where the
+/// clear tail after that bit starts.
+#[derive(Clone, Copy, Debug, Default)]
+struct Gaps {
+    inner: u32,
+    tail: u32,
+}
+
+impl Gaps {
+    fn of(atlas: &Bitmap, y: usize, runs: &mut Vec<(u32, u32)>) -> Self {
+        atlas.runs(y, runs);
+        let mut inner = 0;
+        let mut tail = 0u32;
+        for &(a, b) in runs.iter() {
+            inner = inner.max(a - tail);
+            tail = b + 1;
+        }
+        Self { inner, tail }
+    }
+
+    /// The longest clear run of the row's first `end` bits.
+    fn room(self, end: u32) -> u32 {
+        self.inner.max(end.saturating_sub(self.tail))
+    }
 }
 
 /// What one packing at one scale gave: where each chart went (in `order`), and the side of
@@ -198,12 +315,12 @@ pub(crate) fn try_pack(
 ) -> Option<Packed> {
     let p = padding as usize;
     let mut atlas = Bitmap::new(limit, limit)?;
+    let mut gaps = vec![Gaps::default(); limit];
+    let mut runs = Vec::new();
     let (mut width, mut height) = (0usize, 0usize);
     let mut placed = Vec::with_capacity(order.len());
     for &i in order {
-        let shapes: Vec<Option<Shape>> = (0..if turns { 4 } else { 1 })
-            .map(|k| rasterize(&charts[i], extents[i], k, scale, p, limit))
-            .collect();
+        let shapes = shapes(&charts[i], extents[i], scale, p, limit, turns);
         // (square side, y, x, turn) of the best spot so far.
         let mut best: Option<(usize, usize, usize, usize)> = None;
         for (k, shape) in shapes.iter().enumerate() {
@@ -215,14 +332,23 @@ pub(crate) fn try_pack(
                 let tall = height.max(y + shape.h);
                 let least = width.max(tall).max(shape.w);
                 let mut xmax = limit - shape.w;
-                if let Some((side, by, _, _)) = best {
-                    // The least square only grows with y; a tie loses to the lower spot.
+                if let Some((side, by, bx, _)) = best {
+                    // The least square only grows with y; a tie loses to the lower spot (and
+                    // on the same row, to the left one), so only better spots are searched.
                     if least > side || (least == side && y > by) {
                         break;
                     }
-                    xmax = xmax.min(side - shape.w);
+                    let most = if y > by {
+                        (side - 1).checked_sub(shape.w)
+                    } else {
+                        (side - shape.w).checked_sub(usize::from(bx + shape.w == side))
+                    };
+                    match most {
+                        Some(most) => xmax = xmax.min(most),
+                        None => continue,
+                    }
                 }
-                if let Some(x) = first_fit(&atlas, shape, y, xmax, height, &mut hint) {
+                if let Some(x) = first_fit(&atlas, &gaps, shape, y, xmax, height, &mut hint) {
                     let side = least.max(x + shape.w);
                     if best.is_none_or(|b| (side, y, x) < (b.0, b.1, b.2)) {
                         best = Some((side, y, x, k));
@@ -233,11 +359,14 @@ pub(crate) fn try_pack(
         let (_, y, x, k) = best?;
         let shape = shapes[k].as_ref()?;
         atlas.blit(&shape.texels, x + p, y + p);
+        for r in y + p..y + p + shape.texels.height() {
+            gaps[r] = Gaps::of(&atlas, r, &mut runs);
+        }
         width = width.max(x + shape.w);
         height = height.max(y + shape.h);
         placed.push(Placed {
             turns: k as u8,
-            origin: DVec2::new((x + p) as f64, (y + p) as f64) + MARGIN_TEXELS,
+            origin: DVec2::new((x + p) as f64, (y + p) as f64) + MARGIN_TEXELS + shape.shift,
         });
     }
     Some(Packed {
@@ -251,6 +380,9 @@ const SEARCH_ATTEMPTS: u32 = 8;
 
 /// The search stops once the bracket is this narrow (relative to its low end).
 const SEARCH_TOLERANCE: f64 = 1e-3;
+
+/// The search stops once the filled square is this close to the texture's side (relative).
+const FULL: f64 = 2e-3;
 
 /// The largest atlas bitmap side (32 MiB of bits); textures over half of it are not packed
 /// here.
@@ -284,7 +416,8 @@ pub(crate) fn search(
     let mut s = start;
     for _ in 0..SEARCH_ATTEMPTS {
         *attempts += 1;
-        let side = match try_pack(order, charts, extents, s, padding, turns, limit) {
+        let r = try_pack(order, charts, extents, s, padding, turns, limit);
+        let side = match r {
             Some(packed) => {
                 let side = packed.side as f64;
                 if side <= target {
@@ -302,7 +435,10 @@ pub(crate) fn search(
                 None
             }
         };
-        if hi <= lo * (1.0 + SEARCH_TOLERANCE) {
+        // Done when the bracket is narrow, or the square fills the texture but for a texel or
+        // two per thousand (a larger scale would gain no more than that).
+        let full = side.is_some_and(|e| e <= target && e >= target * (1.0 - FULL));
+        if full || hi <= lo * (1.0 + SEARCH_TOLERANCE) {
             break;
         }
         let step = match (previous, side) {
