@@ -241,8 +241,8 @@ mod tests {
         b.set_span(0, 0, 0);
         let d = b.dilated(2).expect("small");
         assert_eq!((d.width(), d.height()), (74, 9));
-        for y in 0..9 {
-            for x in 0..74 {
+        for y in 0..9usize {
+            for x in 0..74usize {
                 let near =
                     |cx: usize, cy: usize| x.abs_diff(cx + 2) <= 2 && y.abs_diff(cy + 2) <= 2;
                 assert_eq!(d.get(x, y), near(66, 2) || near(0, 0), "({x}, {y})");

@@ -248,19 +248,10 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
         }
     }
     if let Some((best_scale, order, found)) = outlined {
-        let size = f64::from(options.size);
-        let mut chart_area = 0.0;
-        for (&i, spot) in order.iter().zip(&found) {
-            let e = extents[i];
-            for uv in &mut charts[i].uvs {
-                let q = horizon::turn(*uv, e, spot.turns) * best_scale;
-                *uv = (spot.origin + q) / size;
-            }
-            chart_area += chart_uv_area(&charts[i]);
-        }
+        let efficiency = place(charts, &order, &extents, best_scale, &found, options.size);
         return Ok(PackStats {
             texels_per_unit: best_scale,
-            efficiency: chart_area,
+            efficiency,
             attempts,
         });
     }
@@ -293,6 +284,29 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
         efficiency: chart_area,
         attempts,
     })
+}
+
+/// Moves the charts `order` (normalized, box extents `extents`) to their `spots` at `scale` in
+/// a `size`-texel square, and returns their total uv area.
+fn place(
+    charts: &mut [Chart],
+    order: &[usize],
+    extents: &[DVec2],
+    scale: f64,
+    spots: &[horizon::Placed],
+    size: u32,
+) -> f64 {
+    let size = f64::from(size);
+    let mut chart_area = 0.0;
+    for (&i, spot) in order.iter().zip(spots) {
+        let e = extents[i];
+        for uv in &mut charts[i].uvs {
+            let q = horizon::turn(*uv, e, spot.turns) * scale;
+            *uv = (spot.origin + q) / size;
+        }
+        chart_area += chart_uv_area(&charts[i]);
+    }
+    chart_area
 }
 
 /// The total unsigned area of a chart's triangles in uv.

@@ -457,3 +457,287 @@ pub(crate) fn search(
     }
     best
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::{chart_uv_area, horizon, normalize, place};
+    use super::*;
+    use crate::overlap::triangles_overlap;
+
+    /// A chart of unit cells (each two triangles, vertices not shared), `side` units each.
+    fn cells_chart(cells: &[(u32, u32)], side: f64) -> Chart {
+        let mut chart = Chart {
+            faces: Vec::new(),
+            vertices: Vec::new(),
+            triangles: Vec::new(),
+            uvs: Vec::new(),
+        };
+        for &(i, j) in cells {
+            let n = chart.uvs.len() as u32;
+            let o = DVec2::new(f64::from(i), f64::from(j));
+            chart
+                .uvs
+                .extend([o, o + DVec2::X, o + DVec2::ONE, o + DVec2::Y].map(|p| p * side));
+            chart.vertices.extend(n..n + 4);
+            chart
+                .triangles
+                .extend([[n, n + 1, n + 2], [n, n + 2, n + 3]]);
+            chart.faces.extend([n / 2, n / 2 + 1]);
+        }
+        chart
+    }
+
+    /// An L of arms `arm` cells long, one cell thick.
+    fn l_chart(arm: u32, side: f64) -> Chart {
+        let cells: Vec<(u32, u32)> = (0..arm)
+            .map(|i| (i, 0))
+            .chain((1..arm).map(|j| (0, j)))
+            .collect();
+        cells_chart(&cells, side)
+    }
+
+    /// A square ring `outer` cells wide around a square hole `outer - 2 * thick` cells wide.
+    fn annulus(outer: u32, thick: u32, side: f64) -> Chart {
+        let cells: Vec<(u32, u32)> = (0..outer)
+            .flat_map(|i| (0..outer).map(move |j| (i, j)))
+            .filter(|&(i, j)| i < thick || j < thick || i >= outer - thick || j >= outer - thick)
+            .collect();
+        cells_chart(&cells, side)
+    }
+
+    /// Normalizes the charts as `pack` does; their extents and the order largest first.
+    fn prepare(charts: &mut [Chart]) -> (Vec<DVec2>, Vec<usize>) {
+        let extents: Vec<DVec2> = charts
+            .iter_mut()
+            .map(|c| normalize(&mut c.uvs, true))
+            .collect();
+        let mut order: Vec<usize> = (0..charts.len()).collect();
+        order.sort_by(|&a, &b| {
+            chart_uv_area(&charts[b])
+                .total_cmp(&chart_uv_area(&charts[a]))
+                .then(a.cmp(&b))
+        });
+        (extents, order)
+    }
+
+    /// The distance between two closed segments.
+    fn segment_distance(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> f64 {
+        let point = |p: DVec2, a: DVec2, b: DVec2| {
+            let l = (b - a).length_squared();
+            let t = if l > 0.0 {
+                ((p - a).dot(b - a) / l).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            p.distance(a + (b - a) * t)
+        };
+        let crosses = |a: DVec2, b: DVec2, c: DVec2, d: DVec2| {
+            let s = |p: DVec2| crate::overlap::orient(a, b, p).signum();
+            s(c) * s(d) < 0.0
+        };
+        if crosses(a, b, c, d) && crosses(c, d, a, b) {
+            return 0.0;
+        }
+        point(a, c, d)
+            .min(point(b, c, d))
+            .min(point(c, a, b))
+            .min(point(d, a, b))
+    }
+
+    /// Checks a packed layout (uvs in the unit square): no two triangles of different charts
+    /// overlap (exactly), any two are at least `padding` texels apart, and every uv is
+    /// `padding` texels inside the border.
+    fn assert_padded(charts: &[Chart], size: u32, padding: u32) {
+        let texel = 1.0 / f64::from(size);
+        let gap = f64::from(padding) * texel;
+        let triangles = |c: &Chart| -> Vec<[DVec2; 3]> {
+            c.triangles
+                .iter()
+                .filter_map(|t| {
+                    let [a, b, c] = t.map(|i| c.uvs.get(i as usize).copied());
+                    Some([a?, b?, c?])
+                })
+                .collect()
+        };
+        for (i, c) in charts.iter().enumerate() {
+            for uv in &c.uvs {
+                assert!(
+                    uv.cmpge(DVec2::splat(gap)).all() && uv.cmple(DVec2::splat(1.0 - gap)).all(),
+                    "chart {i}: {uv}"
+                );
+            }
+            for (j, d) in charts.iter().enumerate().skip(i + 1) {
+                for s in triangles(c) {
+                    for t in triangles(d) {
+                        assert!(!triangles_overlap(s, t), "charts {i} and {j} overlap");
+                        let mut closest = f64::INFINITY;
+                        for a in 0..3 {
+                            for b in 0..3 {
+                                closest = closest.min(segment_distance(
+                                    s[a],
+                                    s[(a + 1) % 3],
+                                    t[b],
+                                    t[(b + 1) % 3],
+                                ));
+                            }
+                        }
+                        assert!(
+                            closest >= gap,
+                            "charts {i} and {j}: {} texels apart",
+                            closest / texel
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    /// The largest scale the horizon packer reaches (bisection to 1e-4 relative).
+    fn horizon_scale(
+        charts: &[Chart],
+        extents: &[DVec2],
+        order: &[usize],
+        size: u32,
+        padding: u32,
+    ) -> f64 {
+        let outlines: Vec<[horizon::Outline; 4]> = charts
+            .iter()
+            .zip(extents)
+            .map(|(c, &e)| [0, 1, 2, 3].map(|k| horizon::Outline::new(&c.uvs, &c.triangles, e, k)))
+            .collect();
+        let (mut lo, mut hi) = (0.0, f64::from(size));
+        while hi > lo * (1.0 + 1e-4) {
+            let mid = 0.5 * (lo + hi);
+            if horizon::try_pack(order, &outlines, mid, size, padding, true).is_some() {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
+    }
+
+    fn mix() -> Vec<Chart> {
+        let mut charts: Vec<Chart> = (0..10)
+            .map(|k| l_chart(2 + k % 4, 1.0 + 0.1 * f64::from(k)))
+            .collect();
+        charts.push(annulus(5, 1, 1.0));
+        charts.push(cells_chart(&[(0, 0)], 0.7));
+        charts
+    }
+
+    #[test]
+    fn packed_charts_never_overlap_and_keep_the_padding() {
+        for (size, padding) in [(256, 3), (200, 1), (128, 0)] {
+            let mut charts = mix();
+            let (extents, order) = prepare(&mut charts);
+            let mut attempts = 0;
+            let (scale, spots) = search(
+                &order,
+                &charts,
+                &extents,
+                size,
+                padding,
+                true,
+                1.0,
+                1e3,
+                &mut attempts,
+            )
+            .expect("packs");
+            assert!(attempts <= SEARCH_ATTEMPTS);
+            let efficiency = place(&mut charts, &order, &extents, scale, &spots, size);
+            assert!(efficiency > 0.3 && efficiency < 1.0, "{efficiency}");
+            assert_padded(&charts, size, padding);
+        }
+    }
+
+    #[test]
+    fn a_small_chart_goes_into_a_hole() {
+        let mut charts = vec![annulus(5, 1, 1.0), cells_chart(&[(0, 0)], 1.0)];
+        let (extents, order) = prepare(&mut charts);
+        assert_eq!(order, [0, 1]);
+        // 20 texels a cell: the hole is 60 texels wide, the small chart 20 plus 2 × 4 padding.
+        let packed = try_pack(&order, &charts, &extents, 20.0, 4, true, 256).expect("fits");
+        place(&mut charts, &order, &extents, 20.0, &packed.placed, 1);
+        let ring = charts[0]
+            .uvs
+            .iter()
+            .fold((DVec2::INFINITY, DVec2::NEG_INFINITY), |(lo, hi), &p| {
+                (lo.min(p), hi.max(p))
+            });
+        assert!((ring.1 - ring.0 - DVec2::splat(100.0)).abs().max_element() < 1e-9);
+        let (lo, hi) = (ring.0 + 20.0, ring.1 - 20.0);
+        for p in &charts[1].uvs {
+            assert!(
+                p.cmpgt(lo).all() && p.cmplt(hi).all(),
+                "{p} not in the hole {lo} {hi}"
+            );
+        }
+        // The atlas is no larger than the ring's mask.
+        assert_eq!(packed.side, 100 + 1 + 8);
+    }
+
+    #[test]
+    fn l_shapes_pack_denser_than_on_a_horizon() {
+        let mut charts: Vec<Chart> = (0..16)
+            .map(|k| l_chart(3 + k % 3, 1.0 + 0.05 * f64::from(k)))
+            .collect();
+        let (extents, order) = prepare(&mut charts);
+        let (size, padding) = (512, 2);
+        let horizon = horizon_scale(&charts, &extents, &order, size, padding);
+        let mut attempts = 0;
+        let (raster, _) = search(
+            &order,
+            &charts,
+            &extents,
+            size,
+            padding,
+            true,
+            horizon,
+            1e4,
+            &mut attempts,
+        )
+        .expect("packs");
+        // Efficiency goes with the scale squared.
+        assert!(
+            raster > horizon * 1.05,
+            "raster {raster} vs horizon {horizon}"
+        );
+    }
+
+    #[test]
+    fn degenerate_charts_are_packed_without_panic() {
+        let line = Chart {
+            faces: vec![0],
+            vertices: vec![0, 1, 2],
+            triangles: vec![[0, 1, 2]],
+            uvs: vec![DVec2::ZERO, DVec2::X, DVec2::new(2.0, 0.0)],
+        };
+        let point = Chart {
+            faces: vec![0, 1],
+            vertices: vec![0, 1, 2],
+            triangles: vec![[0, 1, 2], [0, 9, 1]],
+            uvs: vec![DVec2::ONE; 3],
+        };
+        let mut charts = vec![line, point, cells_chart(&[(0, 0)], 1.0)];
+        let (extents, order) = prepare(&mut charts);
+        for scale in [0.0, 1e-300, 10.0, 1e300, f64::NAN, f64::INFINITY] {
+            let _ = try_pack(&order, &charts, &extents, scale, 2, true, 64);
+        }
+        let mut attempts = 0;
+        let (scale, spots) = search(
+            &order,
+            &charts,
+            &extents,
+            64,
+            2,
+            true,
+            1.0,
+            1e3,
+            &mut attempts,
+        )
+        .expect("packs");
+        place(&mut charts, &order, &extents, scale, &spots, 64);
+        assert_padded(&charts, 64, 2);
+    }
+}
