@@ -1,20 +1,26 @@
 //! Packing charts into the unit square: one texel density for every chart, each chart turned to
-//! its minimum-area bounding box, the boxes packed bottom-left on a skyline with a padding in
-//! texels between charts and to the border.
+//! its minimum-area bounding box, then packed with a padding in texels between charts and to the
+//! border — as boxes, as raster masks, or as outlines on a horizon, whichever reaches the
+//! largest scale.
 //!
 //! The packer scales all charts by one factor (so every chart gets the same texels per unit of
-//! surface, as a lightmap or a painted texture wants) and searches that factor by bisection:
-//! the largest scale at which the skyline packer (Jylänki 2010, SKYLINE-BL) still places every
-//! chart's padded box inside the square. Boxes are whole texels, so the padding holds in texels
-//! exactly: two charts are at least `padding` texels apart (plus a margin of 1/64 texel that
-//! keeps them apart after rounding uvs to f32), and every chart is at least `padding` texels
-//! from the border.
+//! surface, as a lightmap or a painted texture wants) and searches the largest factor at which
+//! every chart still fits the square:
 //!
-//! Packing bounding boxes rather than rasterized chart outlines (as xatlas does) wastes the
-//! space a box has around its chart; turning charts to their minimum-area boxes (Freeman and
-//! Shapira 1975) and turning boxes by 90° where that sits lower recovers part of it. Lévy et
-//! al., "Least squares conformal maps for automatic texture atlas generation" (SIGGRAPH 2002,
-//! §6), pack charts on a similar horizon ("Tetris") outline of rasterized charts.
+//! 1. Boxes: the charts' padded minimum-area boxes (Freeman and Shapira 1975) on a skyline
+//!    (Jylänki 2010, SKYLINE-BL), the scale found by bisection. Boxes are whole texels, so the
+//!    padding holds exactly. This always runs and gives the floor for the others.
+//! 2. Raster masks (up to 512 charts): each chart, in its four quarter turns,
+//!    rasterized conservatively, dilated by the padding and placed in an atlas bitmap where the
+//!    filled square stays smallest — xatlas's packer (Jonathan Young's texture atlas library),
+//!    with the scale found by secant steps. Charts fill each other's holes and overhangs.
+//! 3. A horizon (up to 256 charts): chart column outlines lowered onto the packed area's upper
+//!    outline (Lévy et al., "Least squares conformal maps for automatic texture atlas
+//!    generation", SIGGRAPH 2002, §6, "Tetris" packing), tried from the raster's scale up.
+//!
+//! Two charts are at least `padding` texels apart (plus a margin of 1/64 texel that keeps them
+//! apart after rounding uvs to f32), and every chart is at least `padding` texels from the
+//! border.
 //!
 //! # Efficiency
 //! [`PackStats::efficiency`] is the charts' total uv area (the triangles' areas after packing)
