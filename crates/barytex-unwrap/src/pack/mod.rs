@@ -10,7 +10,7 @@
 //! 1. Boxes: the charts' padded minimum-area boxes (Freeman and Shapira 1975) on a skyline
 //!    (Jylänki 2010, SKYLINE-BL), the scale found by bisection. Boxes are whole texels, so the
 //!    padding holds exactly. This always runs and gives the floor for the others.
-//! 2. Raster masks (up to 512 charts): each chart, in its four quarter turns,
+//! 2. Raster masks (up to 128 charts): each chart, in its four quarter turns,
 //!    rasterized conservatively, dilated by the padding and placed in an atlas bitmap where the
 //!    filled square stays smallest — xatlas's packer (Jonathan Young's texture atlas library),
 //!    with the scale found by secant steps. Charts fill each other's holes and overhangs.
@@ -75,8 +75,11 @@ const MARGIN_TEXELS: f64 = 1.0 / 64.0;
 /// per attempt).
 const HORIZON_MAX_CHARTS: usize = 256;
 
-/// The most charts packed as raster masks too (each placement searches the atlas bitmap).
-const RASTER_MAX_CHARTS: usize = 512;
+/// The most charts packed as raster masks too: each placement searches the atlas bitmap row by
+/// row, so the cost grows with the charts times the atlas side; many small charts of nearly
+/// equal size (pairs, single triangles) fill their boxes anyway and gain little (480 sphere
+/// pairs took over a second, for the boxes' efficiency).
+const RASTER_MAX_CHARTS: usize = 128;
 
 /// The share of the square the charts' area is guessed to cover when the raster search starts.
 const RASTER_START_EFFICIENCY: f64 = 0.55;
@@ -195,9 +198,7 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
             &order,
             charts,
             &extents,
-            options.size,
-            options.padding,
-            options.rotate,
+            options,
             start,
             bound,
             &mut attempts,

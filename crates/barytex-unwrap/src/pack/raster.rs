@@ -30,9 +30,9 @@
 
 use glam::DVec2;
 
-use super::MARGIN_TEXELS;
 use super::bitmap::Bitmap;
 use super::horizon::{Placed, turn};
+use super::{MARGIN_TEXELS, PackOptions};
 use crate::Chart;
 
 /// One chart at one scale in one turn.
@@ -123,7 +123,7 @@ fn fill_triangle(texels: &mut Bitmap, t: [DVec2; 3], m: f64) {
 /// The texels `floor(lo)..=floor(hi)` clipped to `0..n`, or `None` when none is left (or the
 /// bounds are not numbers).
 fn cells(lo: f64, hi: f64, n: usize) -> Option<(usize, usize)> {
-    if !(lo <= hi) || n == 0 || hi < 0.0 || lo >= n as f64 {
+    if lo.is_nan() || hi.is_nan() || lo > hi || n == 0 || hi < 0.0 || lo >= n as f64 {
         return None;
     }
     // Truncation is the floor for these non-negative numbers (and no libm call).
@@ -359,8 +359,9 @@ pub(crate) fn try_pack(
         let (_, y, x, k) = best?;
         let shape = shapes[k].as_ref()?;
         atlas.blit(&shape.texels, x + p, y + p);
-        for r in y + p..y + p + shape.texels.height() {
-            gaps[r] = Gaps::of(&atlas, r, &mut runs);
+        let rows = y + p..y + p + shape.texels.height();
+        for (r, gap) in gaps.iter_mut().enumerate().take(rows.end).skip(rows.start) {
+            *gap = Gaps::of(&atlas, r, &mut runs);
         }
         width = width.max(x + shape.w);
         height = height.max(y + shape.h);
@@ -384,9 +385,9 @@ const SEARCH_TOLERANCE: f64 = 1e-3;
 /// The search stops once the filled square is this close to the texture's side (relative).
 const FULL: f64 = 2e-3;
 
-/// The largest atlas bitmap side (32 MiB of bits); textures over half of it are not packed
-/// here.
-pub(crate) const MAX_LIMIT: usize = 1 << 14;
+/// The largest atlas bitmap side (8 MiB of bits; each chart's bitmaps are no larger);
+/// textures over half of it (4096 texels) are not packed here.
+pub(crate) const MAX_LIMIT: usize = 1 << 13;
 
 /// Searches the largest scale, up to `ceiling`, at which [`try_pack`] fits the charts into a
 /// `size`-texel square, starting at `start` (a scale another packer reached): secant steps on
@@ -398,15 +399,18 @@ pub(crate) fn search(
     order: &[usize],
     charts: &[Chart],
     extents: &[DVec2],
-    size: u32,
-    padding: u32,
-    turns: bool,
+    options: &PackOptions,
     start: f64,
     ceiling: f64,
     attempts: &mut u32,
 ) -> Option<(f64, Vec<Placed>)> {
+    let PackOptions {
+        size,
+        padding,
+        rotate: turns,
+    } = *options;
     let limit = 2 * size as usize;
-    if limit > MAX_LIMIT || !(start > 0.0) || !(ceiling.is_finite()) {
+    if limit > MAX_LIMIT || start.is_nan() || start <= 0.0 || !ceiling.is_finite() {
         return None;
     }
     let target = f64::from(size);
@@ -636,9 +640,11 @@ mod tests {
                 &order,
                 &charts,
                 &extents,
-                size,
-                padding,
-                true,
+                &PackOptions {
+                    size,
+                    padding,
+                    rotate: true,
+                },
                 1.0,
                 1e3,
                 &mut attempts,
@@ -690,9 +696,11 @@ mod tests {
             &order,
             &charts,
             &extents,
-            size,
-            padding,
-            true,
+            &PackOptions {
+                size,
+                padding,
+                rotate: true,
+            },
             horizon,
             1e4,
             &mut attempts,
@@ -729,9 +737,11 @@ mod tests {
             &order,
             &charts,
             &extents,
-            64,
-            2,
-            true,
+            &PackOptions {
+                size: 64,
+                padding: 2,
+                rotate: true,
+            },
             1.0,
             1e3,
             &mut attempts,
