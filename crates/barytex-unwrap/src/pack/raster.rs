@@ -7,9 +7,9 @@
 //! This is the packer of xatlas (Jonathan Young's texture atlas library,
 //! <https://github.com/jpcy/xatlas>, `PackCharts`): charts largest first, each at the position
 //! (and turn) that keeps the atlas's bounding square smallest, then lowest, then leftmost.
-//! Unlike xatlas, which packs at one scale and stretches the atlas to the texture, the scale
-//! here is searched (secant steps on the atlas side against the scale, inside a bisection
-//! bracket) so that the square fits the texture exactly at the padding asked for.
+//! Here one texel density is searched for all charts (secant steps on the filled square's side
+//! against the scale, inside a bisection bracket), so that the square fits the texture at the
+//! padding asked for, in texels.
 //!
 //! # Exactness of the padding
 //! A chart's texels are every texel that any of its triangles (and points), grown by
@@ -17,8 +17,8 @@
 //! mask is those texels dilated by a `(2p + 1)²` square (the Chebyshev ball of radius `p`,
 //! the padding). The atlas holds the texels (undilated) of the charts placed; a position is
 //! free when the mask there meets none of them. Two charts' texels are then at least `p + 1`
-//! texel indices apart along one axis, so any two of their points are more than `p` texels
-//! apart — plus twice the margin that rounding uvs to f32 cannot eat. The mask also stays
+//! texel indices apart along one axis, so any two of their points are at least `p` texels
+//! apart — plus twice the margin, which rounding uvs to f32 cannot eat. The mask also stays
 //! inside the texture, so a chart's texels are `p` texels from the border.
 //!
 //! # Cost
@@ -26,7 +26,10 @@
 //! with one query to the atlas ("the last set texel in this range of this row", a few word
 //! reads, none for a row outside its set span), and a hit moves the candidate right past that
 //! texel at once. The row that failed last is tried first at the next candidate, so most
-//! candidates cost one query.
+//! candidates cost one query; a candidate row is refused without any when a mask row is longer
+//! than every clear run of the atlas row under it; and only spots better than the best so far
+//! are searched. Turns 2 and 3 are the bitmaps of turns 0 and 1 half-turned (exact, the chart
+//! moved by the texels' slack past its box), so each chart is rasterized twice per packing.
 
 use glam::DVec2;
 
