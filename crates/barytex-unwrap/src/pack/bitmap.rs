@@ -161,16 +161,37 @@ impl Bitmap {
     pub(crate) fn dilated(&self, r: usize) -> Option<Self> {
         let width = self.width.checked_add(2 * r)?;
         let height = self.height.checked_add(2 * r)?;
-        let mut out = Self::new(width, height)?;
+        // Rows dilated sideways first (each run a..=b, moved right by r, becomes a..=b + 2r),
+        // then each output row is the OR of the 2r + 1 sideways rows at or below it.
+        let mut wide = Self::new(width, self.height)?;
         let mut runs = Vec::new();
         for y in 0..self.height {
             self.runs(y, &mut runs);
             for &(a, b) in &runs {
-                // Run a..=b moves right by r and widens by r on each side: a..=b + 2r.
-                for dy in 0..=2 * r {
-                    out.set_span(y + dy, a as usize, b as usize + 2 * r);
+                wide.set_span(y, a as usize, b as usize + 2 * r);
+            }
+        }
+        let mut out = Self::new(width, height)?;
+        let stride = out.stride;
+        for y in 0..height {
+            let from = y.saturating_sub(2 * r);
+            let to = y.min(self.height - 1);
+            if from > to {
+                continue;
+            }
+            let row = &mut out.words[y * stride..(y + 1) * stride];
+            let mut span = EMPTY;
+            for source in from..=to {
+                if let Some((first, last)) = wide.span(source) {
+                    let (w0, w1) = (first / 64, last / 64);
+                    let words = &wide.words[source * stride..(source + 1) * stride];
+                    for (o, &i) in row[w0..=w1].iter_mut().zip(&words[w0..=w1]) {
+                        *o |= i;
+                    }
+                    span = (span.0.min(first), span.1.max(last));
                 }
             }
+            out.spans[y] = span;
         }
         Some(out)
     }

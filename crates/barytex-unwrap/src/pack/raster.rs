@@ -100,21 +100,44 @@ fn fill_triangle(texels: &mut Bitmap, t: [DVec2; 3], m: f64) {
     let Some((r0, r1)) = cells(ylo, yhi, h) else {
         return;
     };
+    // Per edge: its y range, and x as a function of y (`None`: flat or too steep a slope for
+    // f64, then its whole x range is used, which is still conservative).
+    let edges = [0, 1, 2].map(|i| {
+        let (p, q) = (t[i], t[(i + 1) % 3]);
+        let k = (q.x - p.x) / (q.y - p.y);
+        (p.y.min(q.y), p.y.max(q.y), p, q, k.is_finite().then_some(k))
+    });
     for r in r0..=r1 {
         // The triangle's points whose grown square reaches row r lie in the slab [a, b]; the
-        // clipped polygon's corners are corners inside the slab and edges crossing its sides.
+        // clipped triangle's boundary is made of its edges' pieces inside the slab (and
+        // horizontal cuts whose ends are on those pieces), so its x range is theirs.
         let (a, b) = (r as f64 - m, r as f64 + 1.0 + m);
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-        for i in 0..3 {
-            let (p, q) = (t[i], t[(i + 1) % 3]);
-            if (a..=b).contains(&p.y) {
-                (lo, hi) = (lo.min(p.x), hi.max(p.x));
+        for &(y0, y1, p, q, k) in &edges {
+            if y1 < a || y0 > b {
+                continue;
             }
-            for level in [a, b] {
-                if (p.y - level) * (q.y - level) < 0.0 {
-                    let x = p.x + (level - p.y) / (q.y - p.y) * (q.x - p.x);
-                    (lo, hi) = (lo.min(x), hi.max(x));
+            // Plain comparisons (f64::min and clamp also handle NaN, which cannot occur here
+            // but costs on every row).
+            let within = |y: f64| {
+                if y < y0 {
+                    y0
+                } else if y > y1 {
+                    y1
+                } else {
+                    y
                 }
+            };
+            let (xa, xb) = match k {
+                Some(k) => (p.x + (within(a) - p.y) * k, p.x + (within(b) - p.y) * k),
+                None => (p.x, q.x),
+            };
+            let (l, h) = if xa < xb { (xa, xb) } else { (xb, xa) };
+            if l < lo {
+                lo = l;
+            }
+            if h > hi {
+                hi = h;
             }
         }
         if let Some((c0, c1)) = cells(lo - m, hi + m, w) {
@@ -222,6 +245,9 @@ fn rasterize(
     })
 }
 
+/// Every how many mask rows the clear-run test asks.
+const GAP_STRIDE: usize = 8;
+
 /// The first `x <= xmax` where `shape`'s mask at `(x, y)` meets no set texel of `atlas`, whose
 /// rows from `filled` up are empty and whose rows have `gaps` (see [`Gaps`]); `hint` is the
 /// mask row that failed last.
@@ -237,13 +263,14 @@ fn first_fit(
     // Rows of the mask that land on empty atlas rows never collide.
     let live = filled.saturating_sub(y).min(shape.h);
     // A mask row longer than every clear run of its atlas row fits nowhere on this row; the
-    // row that refused last is asked first.
+    // row that refused last is asked first, then every `GAP_STRIDE`th row (refusing rows come
+    // in bands, and asking every row would cost as much as the search it saves).
     let end = (xmax + shape.w) as u32;
     let refuses = |r: usize| shape.longest[r] > gaps[y + r].room(end);
     if *hint < live && refuses(*hint) {
         return None;
     }
-    if let Some(r) = (0..live).find(|&r| refuses(r)) {
+    if let Some(r) = (0..live).step_by(GAP_STRIDE).find(|&r| refuses(r)) {
         *hint = r;
         return None;
     }
@@ -348,6 +375,8 @@ pub(crate) fn try_pack(
                     };
                     match most {
                         Some(most) => xmax = xmax.min(most),
+                        // Past the best row the bound no longer changes with y.
+                        None if y > by => break,
                         None => continue,
                     }
                 }
