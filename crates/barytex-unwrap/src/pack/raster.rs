@@ -245,6 +245,14 @@ fn rasterize(
     })
 }
 
+/// The search's state along one chart turn: the mask row that refused last, and the work done
+/// (candidate rows and atlas queries).
+#[derive(Clone, Copy, Debug, Default)]
+struct Probe {
+    hint: usize,
+    work: u64,
+}
+
 /// Every how many mask rows the clear-run test asks.
 const GAP_STRIDE: usize = 8;
 
@@ -258,36 +266,38 @@ fn first_fit(
     y: usize,
     xmax: usize,
     filled: usize,
-    hint: &mut usize,
+    probe: &mut Probe,
 ) -> Option<usize> {
     // Rows of the mask that land on empty atlas rows never collide.
     let live = filled.saturating_sub(y).min(shape.h);
+    probe.work += 1;
     // A mask row longer than every clear run of its atlas row fits nowhere on this row; the
     // row that refused last is asked first, then every `GAP_STRIDE`th row (refusing rows come
     // in bands, and asking every row would cost as much as the search it saves).
     let end = (xmax + shape.w) as u32;
     let refuses = |r: usize| shape.longest[r] > gaps[y + r].room(end);
-    if *hint < live && refuses(*hint) {
+    if probe.hint < live && refuses(probe.hint) {
         return None;
     }
     if let Some(r) = (0..live).step_by(GAP_STRIDE).find(|&r| refuses(r)) {
-        *hint = r;
+        probe.hint = r;
         return None;
     }
-    if *hint >= live {
-        *hint = 0;
+    if probe.hint >= live {
+        probe.hint = 0;
     }
     let mut x = 0;
     'candidates: while x <= xmax {
         // The hinted row first, then the others in turn.
-        let (first, rest) = (*hint..live, 0..*hint);
+        let (first, rest) = (probe.hint..live, 0..probe.hint);
         for r in first.chain(rest) {
             for &(a, b) in shape.row(r) {
                 let (a, b) = (a as usize, b as usize);
+                probe.work += 1;
                 if let Some(c) = atlas.last_set_in(y + r, x + a, x + b) {
                     // Every x' up to c - a puts this run over texel c.
                     x = c + 1 - a;
-                    *hint = r;
+                    probe.hint = r;
                     continue 'candidates;
                 }
             }
@@ -339,10 +349,11 @@ pub(crate) fn try_pack(
     charts: &[Chart],
     extents: &[DVec2],
     scale: f64,
-    padding: u32,
-    turns: bool,
+    options: &PackOptions,
     limit: usize,
+    work: &mut u64,
 ) -> Option<Packed> {
+    let (padding, turns) = (options.padding, options.rotate);
     let p = padding as usize;
     let mut atlas = Bitmap::new(limit, limit)?;
     let mut gaps = vec![Gaps::default(); limit];
@@ -353,11 +364,12 @@ pub(crate) fn try_pack(
         let shapes = shapes(&charts[i], extents[i], scale, p, limit, turns);
         // (square side, y, x, turn) of the best spot so far.
         let mut best: Option<(usize, usize, usize, usize)> = None;
+        let mut probe = Probe::default();
         for (k, shape) in shapes.iter().enumerate() {
             let Some(shape) = shape else {
                 continue;
             };
-            let mut hint = 0;
+            probe.hint = 0;
             for y in 0..=(limit - shape.h) {
                 let tall = height.max(y + shape.h);
                 let least = width.max(tall).max(shape.w);
@@ -380,13 +392,17 @@ pub(crate) fn try_pack(
                         None => continue,
                     }
                 }
-                if let Some(x) = first_fit(&atlas, &gaps, shape, y, xmax, height, &mut hint) {
+                if let Some(x) = first_fit(&atlas, &gaps, shape, y, xmax, height, &mut probe) {
                     let side = least.max(x + shape.w);
                     if best.is_none_or(|b| (side, y, x) < (b.0, b.1, b.2)) {
                         best = Some((side, y, x, k));
                     }
                 }
             }
+        }
+        *work = work.saturating_sub(probe.work);
+        if *work == 0 {
+            return None;
         }
         let (_, y, x, k) = best?;
         let shape = shapes[k].as_ref()?;
@@ -417,6 +433,11 @@ const SEARCH_TOLERANCE: f64 = 1e-3;
 /// The search stops once the filled square is this close to the texture's side (relative).
 const FULL: f64 = 2e-3;
 
+/// The work (candidate rows and atlas queries) one scale search may do, per texel of the
+/// texture: about 3 times what Suzanne's 57 charts take, so that no input of up to 128 charts
+/// makes the search run for long; the packings done by then still count.
+const WORK_PER_TEXEL: u64 = 32;
+
 /// The largest atlas bitmap side (8 MiB of bits; each chart's bitmaps are no larger);
 /// textures over half of it (4096 texels) are not packed here.
 pub(crate) const MAX_LIMIT: usize = 1 << 13;
@@ -436,23 +457,24 @@ pub(crate) fn search(
     ceiling: f64,
     attempts: &mut u32,
 ) -> Option<(f64, Vec<Placed>)> {
-    let PackOptions {
-        size,
-        padding,
-        rotate: turns,
-    } = *options;
+    let size = options.size;
     let limit = 2 * size as usize;
     if limit > MAX_LIMIT || start.is_nan() || start <= 0.0 || !ceiling.is_finite() {
         return None;
     }
     let target = f64::from(size);
+    let mut work = WORK_PER_TEXEL * u64::from(size) * u64::from(size);
     let (mut lo, mut hi) = (0.0, ceiling.max(start));
     let mut best: Option<(f64, Vec<Placed>)> = None;
     let mut previous: Option<(f64, f64)> = None;
     let mut s = start;
     for _ in 0..SEARCH_ATTEMPTS {
         *attempts += 1;
-        let r = try_pack(order, charts, extents, s, padding, turns, limit);
+        let r = try_pack(order, charts, extents, s, options, limit, &mut work);
+        if work == 0 {
+            // Out of work (charts of a shape that makes every row a maze): the best so far.
+            break;
+        }
         let side = match r {
             Some(packed) => {
                 let side = packed.side as f64;
@@ -695,7 +717,21 @@ mod tests {
         let (extents, order) = prepare(&mut charts);
         assert_eq!(order, [0, 1]);
         // 20 texels a cell: the hole is 60 texels wide, the small chart 20 plus 2 × 4 padding.
-        let packed = try_pack(&order, &charts, &extents, 20.0, 4, true, 256).expect("fits");
+        let options = PackOptions {
+            size: 256,
+            padding: 4,
+            rotate: true,
+        };
+        let packed = try_pack(
+            &order,
+            &charts,
+            &extents,
+            20.0,
+            &options,
+            256,
+            &mut u64::MAX.clone(),
+        )
+        .expect("fits");
         place(&mut charts, &order, &extents, 20.0, &packed.placed, 1);
         let ring = charts[0]
             .uvs
@@ -713,6 +749,26 @@ mod tests {
         }
         // The atlas is no larger than the ring's mask.
         assert_eq!(packed.side, 100 + 1 + 8);
+    }
+
+    #[test]
+    fn packing_stops_when_out_of_work() {
+        let mut charts = mix();
+        let (extents, order) = prepare(&mut charts);
+        let options = PackOptions {
+            size: 256,
+            padding: 2,
+            rotate: true,
+        };
+        let mut plenty = u64::MAX;
+        let packed = try_pack(&order, &charts, &extents, 5.0, &options, 512, &mut plenty);
+        assert!(packed.is_some());
+        let spent = u64::MAX - plenty;
+        assert!(spent > 10);
+        // A budget one short of what that packing needed ends it, with the budget at zero.
+        let mut short = spent - 1;
+        assert!(try_pack(&order, &charts, &extents, 5.0, &options, 512, &mut short).is_none());
+        assert_eq!(short, 0);
     }
 
     #[test]
@@ -762,7 +818,20 @@ mod tests {
         let mut charts = vec![line, point, cells_chart(&[(0, 0)], 1.0)];
         let (extents, order) = prepare(&mut charts);
         for scale in [0.0, 1e-300, 10.0, 1e300, f64::NAN, f64::INFINITY] {
-            let _ = try_pack(&order, &charts, &extents, scale, 2, true, 64);
+            let options = PackOptions {
+                size: 64,
+                padding: 2,
+                rotate: true,
+            };
+            let _ = try_pack(
+                &order,
+                &charts,
+                &extents,
+                scale,
+                &options,
+                64,
+                &mut (1 << 40),
+            );
         }
         let mut attempts = 0;
         let (scale, spots) = search(
