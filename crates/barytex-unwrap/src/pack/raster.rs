@@ -30,6 +30,9 @@
 //! than every clear run of the atlas row under it; and only spots better than the best so far
 //! are searched. Turns 2 and 3 are the bitmaps of turns 0 and 1 half-turned (exact, the chart
 //! moved by the texels' slack past its box), so each chart is rasterized twice per packing.
+//! A scale search may do at most 32 units of work (candidate rows and queries) per texel of
+//! the texture — about 3 times what Suzanne's 57 charts take at 1024 — and then keeps the best
+//! packing it has, so no input of charts makes it run long.
 
 use glam::DVec2;
 
