@@ -123,18 +123,60 @@ fn padding_holds_in_texels() {
     for (lo, hi) in &boxes {
         assert!(lo.cmpge(DVec2::splat(gap)).all() && hi.cmple(DVec2::splat(1.0 - gap)).all());
     }
-    // Boxes of different charts are at least `padding` texels apart along x or y.
-    for i in 0..boxes.len() {
-        for j in i + 1..boxes.len() {
-            let (a, b) = (boxes[i], boxes[j]);
-            let dx = (b.0.x - a.1.x).max(a.0.x - b.1.x);
-            let dy = (b.0.y - a.1.y).max(a.0.y - b.1.y);
-            assert!(
-                dx.max(dy) >= gap * (1.0 - 1e-6),
-                "charts {i} and {j}: {dx} {dy}"
-            );
+    // Any two triangles of different charts are at least `padding` texels apart (their boxes
+    // need not be: outline and raster packers nest charts into each other's corners).
+    let triangles: Vec<Vec<[DVec2; 3]>> = atlas
+        .charts
+        .iter()
+        .map(|c| {
+            c.triangles
+                .iter()
+                .map(|t| t.map(|i| c.uvs[i as usize]))
+                .collect()
+        })
+        .collect();
+    for i in 0..triangles.len() {
+        for j in i + 1..triangles.len() {
+            for s in &triangles[i] {
+                for t in &triangles[j] {
+                    let d = triangle_distance(s, t);
+                    assert!(d >= gap, "charts {i} and {j}: {} texels apart", d / texel);
+                }
+            }
         }
     }
+}
+
+/// The distance between two triangles that do not overlap: the least distance between their
+/// edges (0 when edges cross).
+fn triangle_distance(s: &[DVec2; 3], t: &[DVec2; 3]) -> f64 {
+    assert!(!barytex_unwrap::overlap::triangles_overlap(*s, *t));
+    let point = |p: DVec2, a: DVec2, b: DVec2| {
+        let l = (b - a).length_squared();
+        let u = if l > 0.0 {
+            ((p - a).dot(b - a) / l).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        p.distance(a + (b - a) * u)
+    };
+    let side = |a: DVec2, b: DVec2, p: DVec2| barytex_unwrap::overlap::orient(a, b, p).signum();
+    let mut closest = f64::INFINITY;
+    for k in 0..3 {
+        let (a, b) = (s[k], s[(k + 1) % 3]);
+        for l in 0..3 {
+            let (c, d) = (t[l], t[(l + 1) % 3]);
+            if side(a, b, c) * side(a, b, d) < 0.0 && side(c, d, a) * side(c, d, b) < 0.0 {
+                return 0.0;
+            }
+            closest = closest
+                .min(point(a, c, d))
+                .min(point(b, c, d))
+                .min(point(c, a, b))
+                .min(point(d, a, b));
+        }
+    }
+    closest
 }
 
 #[test]

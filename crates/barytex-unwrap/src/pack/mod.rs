@@ -1,20 +1,26 @@
 //! Packing charts into the unit square: one texel density for every chart, each chart turned to
-//! its minimum-area bounding box, the boxes packed bottom-left on a skyline with a padding in
-//! texels between charts and to the border.
+//! its minimum-area bounding box, then packed with a padding in texels between charts and to the
+//! border — as boxes, as raster masks, or as outlines on a horizon, whichever reaches the
+//! largest scale.
 //!
 //! The packer scales all charts by one factor (so every chart gets the same texels per unit of
-//! surface, as a lightmap or a painted texture wants) and searches that factor by bisection:
-//! the largest scale at which the skyline packer (Jylänki 2010, SKYLINE-BL) still places every
-//! chart's padded box inside the square. Boxes are whole texels, so the padding holds in texels
-//! exactly: two charts are at least `padding` texels apart (plus a margin of 1/64 texel that
-//! keeps them apart after rounding uvs to f32), and every chart is at least `padding` texels
-//! from the border.
+//! surface, as a lightmap or a painted texture wants) and searches the largest factor at which
+//! every chart still fits the square:
 //!
-//! Packing bounding boxes rather than rasterized chart outlines (as xatlas does) wastes the
-//! space a box has around its chart; turning charts to their minimum-area boxes (Freeman and
-//! Shapira 1975) and turning boxes by 90° where that sits lower recovers part of it. Lévy et
-//! al., "Least squares conformal maps for automatic texture atlas generation" (SIGGRAPH 2002,
-//! §6), pack charts on a similar horizon ("Tetris") outline of rasterized charts.
+//! 1. Boxes: the charts' padded minimum-area boxes (Freeman and Shapira 1975) on a skyline
+//!    (Jylänki 2010, SKYLINE-BL), the scale found by bisection. Boxes are whole texels, so the
+//!    padding holds exactly. This always runs and gives the floor for the others.
+//! 2. Raster masks (up to 128 charts): each chart, in its four quarter turns,
+//!    rasterized conservatively, dilated by the padding and placed in an atlas bitmap where the
+//!    filled square stays smallest — xatlas's packer (Jonathan Young's texture atlas library),
+//!    with the scale found by secant steps. Charts fill each other's holes and overhangs.
+//! 3. A horizon (up to 256 charts): chart column outlines lowered onto the packed area's upper
+//!    outline (Lévy et al., "Least squares conformal maps for automatic texture atlas
+//!    generation", SIGGRAPH 2002, §6, "Tetris" packing), tried from the raster's scale up.
+//!
+//! Two charts are at least `padding` texels apart (plus a margin of 1/64 texel that keeps them
+//! apart after rounding uvs to f32), and every chart is at least `padding` texels from the
+//! border.
 //!
 //! # Efficiency
 //! [`PackStats::efficiency`] is the charts' total uv area (the triangles' areas after packing)
@@ -41,10 +47,12 @@
 //! # Ok::<(), barytex_unwrap::pack::PackError>(())
 //! ```
 
+mod bitmap;
 mod error;
 mod horizon;
 mod min_area_rect;
 mod options;
+mod raster;
 mod skyline;
 
 use glam::DVec2;
@@ -66,6 +74,15 @@ const MARGIN_TEXELS: f64 = 1.0 / 64.0;
 /// The most charts packed on a horizon too (its search costs `charts × size × chart width`
 /// per attempt).
 const HORIZON_MAX_CHARTS: usize = 256;
+
+/// The most charts packed as raster masks too: each placement searches the atlas bitmap row by
+/// row, so the cost grows with the charts times the atlas side; many small charts of nearly
+/// equal size (pairs, single triangles) fill their boxes anyway and gain little (480 sphere
+/// pairs took over a second, for the boxes' efficiency).
+const RASTER_MAX_CHARTS: usize = 128;
+
+/// The share of the square the charts' area is guessed to cover when the raster search starts.
+const RASTER_START_EFFICIENCY: f64 = 0.55;
 
 /// Bisection steps of the horizon packer's scale, between the boxes' scale and the area bound.
 const HORIZON_BISECTION_STEPS: u32 = 10;
@@ -154,9 +171,45 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
             }
         }
     }
+    // The charts' own area bounds the scale (their boxes' area does not: outlines nest).
+    let surface: f64 = placed.iter().map(|&i| chart_uv_area(&charts[i])).sum();
+    let bound = if surface > 0.0 {
+        (bin_f / surface.sqrt()).min(bin_f / longest)
+    } else {
+        upper
+    };
+    // The best outline packing so far: its scale, chart order and spots.
+    let mut outlined: Option<(f64, Vec<usize>, Vec<horizon::Placed>)> = None;
+    // Rasterized chart masks (xatlas's packer), searched from the boxes' scale up.
+    if placed.len() <= RASTER_MAX_CHARTS && scale > 0.0 {
+        let areas: Vec<f64> = charts.iter().map(chart_uv_area).collect();
+        // Start where the charts would cover a typical share of the square (the search's
+        // secant steps correct a poor guess), never below the boxes' scale.
+        let start = if surface > 0.0 {
+            (f64::from(options.size) * (RASTER_START_EFFICIENCY / surface).sqrt())
+                .min(bound)
+                .max(scale)
+        } else {
+            scale
+        };
+        let mut order = placed.clone();
+        order.sort_by(|&a, &b| areas[b].total_cmp(&areas[a]).then(a.cmp(&b)));
+        if let Some((reached, spots)) = raster::search(
+            &order,
+            charts,
+            &extents,
+            options,
+            start,
+            bound,
+            &mut attempts,
+        ) && reached > scale
+        {
+            outlined = Some((reached, order, spots));
+        }
+    }
     // Chart outlines on a horizon (Lévy et al. 2002) when there are few enough charts for its
     // column-by-column search (a parameterization's charts; flat pairs and triangles fill their
-    // boxes anyway); kept when it reaches a larger scale than the boxes did.
+    // boxes anyway); kept when it reaches a larger scale than the boxes and masks did.
     if placed.len() <= HORIZON_MAX_CHARTS && scale > 0.0 {
         let outlines: Vec<[horizon::Outline; 4]> = (0..charts.len())
             .map(|i| {
@@ -168,26 +221,12 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
         // Three orders (largest area, tallest, widest first); the one reaching the largest
         // scale is kept.
         let keys: [fn(DVec2) -> f64; 3] = [|e| e.x * e.y, |e| e.y.min(e.x), |e| e.x.max(e.y)];
-        let orders: Vec<Vec<usize>> = keys
-            .iter()
-            .map(|key| {
-                let mut order = placed.clone();
-                order.sort_by(|&a, &b| key(extents[b]).total_cmp(&key(extents[a])).then(a.cmp(&b)));
-                order
-            })
-            .collect();
-        // The charts' own area bounds the scale (their boxes' area does not: outlines nest).
-        let surface: f64 = placed.iter().map(|&i| chart_uv_area(&charts[i])).sum();
-        let bound = if surface > 0.0 {
-            (bin_f / surface.sqrt()).min(bin_f / longest)
-        } else {
-            upper
-        };
-        let mut best_horizon: Option<(f64, usize, Vec<horizon::Placed>)> = None;
-        for (o, order) in orders.iter().enumerate() {
+        for key in keys {
+            let mut order = placed.clone();
+            order.sort_by(|&a, &b| key(extents[b]).total_cmp(&key(extents[a])).then(a.cmp(&b)));
             let attempt = |scale: f64| {
                 horizon::try_pack(
-                    order,
+                    &order,
                     &outlines,
                     scale,
                     options.size,
@@ -195,7 +234,7 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
                     options.rotate,
                 )
             };
-            let floor = best_horizon.as_ref().map_or(scale, |b| b.0);
+            let floor = outlined.as_ref().map_or(scale, |b| b.0);
             attempts += 1;
             let Some(mut found) = attempt(floor) else {
                 continue;
@@ -210,28 +249,18 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
                     None => high = mid,
                 }
             }
-            if best_horizon.as_ref().is_none_or(|b| reached > b.0) {
-                best_horizon = Some((reached, o, found));
+            if outlined.as_ref().is_none_or(|b| reached > b.0) {
+                outlined = Some((reached, order, found));
             }
         }
-        if let Some((best_scale, o, found)) = best_horizon {
-            let by_area = &orders[o];
-            let size = f64::from(options.size);
-            let mut chart_area = 0.0;
-            for (&i, spot) in by_area.iter().zip(&found) {
-                let e = extents[i];
-                for uv in &mut charts[i].uvs {
-                    let q = horizon::turn(*uv, e, spot.turns) * best_scale;
-                    *uv = (spot.origin + q) / size;
-                }
-                chart_area += chart_uv_area(&charts[i]);
-            }
-            return Ok(PackStats {
-                texels_per_unit: best_scale,
-                efficiency: chart_area,
-                attempts,
-            });
-        }
+    }
+    if let Some((best_scale, order, found)) = outlined {
+        let efficiency = place(charts, &order, &extents, best_scale, &found, options.size);
+        return Ok(PackStats {
+            texels_per_unit: best_scale,
+            efficiency,
+            attempts,
+        });
     }
     let size = f64::from(options.size);
     let padding = f64::from(options.padding);
@@ -262,6 +291,29 @@ pub fn pack(charts: &mut [Chart], options: &PackOptions) -> Result<PackStats, Pa
         efficiency: chart_area,
         attempts,
     })
+}
+
+/// Moves the charts `order` (normalized, box extents `extents`) to their `spots` at `scale` in
+/// a `size`-texel square, and returns their total uv area.
+fn place(
+    charts: &mut [Chart],
+    order: &[usize],
+    extents: &[DVec2],
+    scale: f64,
+    spots: &[horizon::Placed],
+    size: u32,
+) -> f64 {
+    let size = f64::from(size);
+    let mut chart_area = 0.0;
+    for (&i, spot) in order.iter().zip(spots) {
+        let e = extents[i];
+        for uv in &mut charts[i].uvs {
+            let q = horizon::turn(*uv, e, spot.turns) * scale;
+            *uv = (spot.origin + q) / size;
+        }
+        chart_area += chart_uv_area(&charts[i]);
+    }
+    chart_area
 }
 
 /// The total unsigned area of a chart's triangles in uv.
