@@ -92,6 +92,12 @@ def run_xatlas(mesh_json, size, padding, runs):
         atlas.generate(chart_options=xatlas.ChartOptions(), pack_options=pack)
         seconds.append(time.perf_counter() - started)
     vmapping, indices, uvs = atlas[0]
+    # The binding divides texel coordinates by the atlas's width and height, and xatlas's atlas is
+    # only near the requested resolution and not square (e.g. 1239 × 935 for the sphere). Scaling
+    # both axes by one factor puts the layout in a square of side max(width, height) as it is,
+    # without stretching it: what a square texture holding xatlas's atlas would show.
+    side = max(atlas.width, atlas.height)
+    uvs = uvs * np.array([atlas.width / side, atlas.height / side])
     info = {
         "atlas_count": int(atlas.atlas_count),
         "chart_count": int(atlas.chart_count),
@@ -212,13 +218,19 @@ def main():
                              "check_ms": 1e3 * statistics.median(checks), **ours})
                 if xatlas_row is None:
                     xatlas_row = {"mesh": name, "method": "xatlas", "ms": 1e3 * info["seconds"],
-                                  "check_ms": None, **stats["compare"], "atlases": info["atlas_count"]}
+                                  "check_ms": None, **stats["compare"], "atlases": info["atlas_count"],
+                                  "size": (info["width"], info["height"])}
             rows.append(xatlas_row)
     header = ("| mesh | method | time ms | exact checks ms | charts | flips | overlaps (between / within) "
               "| efficiency | angle mean / max | area mean / max |")
     lines = [header, "|" + "---|" * 10]
     for r in rows:
         atl = f" ({r['atlases']} atlases)" if r.get("atlases", 1) != 1 else ""
+        if "size" in r:
+            w, h = r["size"]
+            # Its efficiency in its own w × h rectangle, beside the square's.
+            own = r["efficiency"] * max(w, h) ** 2 / (w * h)
+            atl += f", {w}×{h} atlas, {100 * own:.1f}% of it"
         lines.append(
             f"| {r['mesh']} | {r['method']}{atl} | {r['ms']:.1f} | {fmt(r['check_ms'], 1)} | {r['charts']} | {r['flips']} "
             f"| {r['overlaps_between_charts']} / {r['overlaps_within_charts']} | {100 * r['efficiency']:.1f}% "
