@@ -437,8 +437,9 @@ const SEARCH_TOLERANCE: f64 = 1e-3;
 const FULL: f64 = 2e-3;
 
 /// The work (candidate rows and atlas queries) one scale search may do, per texel of the
-/// texture: about 3 times what Suzanne's 57 charts take, so that no input of up to 128 charts
-/// makes the search run for long; the packings done by then still count.
+/// texture: about 3 times what Suzanne's 57 charts take, so that no input of many charts
+/// makes the search run for long (256 charts are allowed; the budget is what bounds the time);
+/// the packings done by then still count.
 const WORK_PER_TEXEL: u64 = 32;
 
 /// The largest atlas bitmap side (8 MiB of bits; each chart's bitmaps are no larger);
