@@ -9,6 +9,7 @@ use rayon::prelude::*;
 use crate::Shader;
 use crate::assemble::{Piece, assemble};
 use crate::state::{PipelineState, Viewport};
+use crate::format::ColorFormat;
 use crate::target::{Framebuffer, TILE};
 use crate::tile::{TileTarget, shade_piece};
 
@@ -95,8 +96,8 @@ fn assemble_parallel<V: Copy + Send + Sync>(
 }
 
 /// The rectangle `[x0, y0, x1, y1)` that a draw may write: target ∩ viewport ∩ scissor.
-pub(crate) fn writable_rect(
-    target: &Framebuffer,
+pub(crate) fn writable_rect<C: ColorFormat>(
+    target: &Framebuffer<C>,
     state: &PipelineState,
     viewport: Viewport,
 ) -> [i64; 4] {
@@ -165,8 +166,8 @@ pub(crate) fn writable_rect(
 /// assert_eq!(stats.fragments_shaded, 28 + (64 - 28));
 /// # Ok::<(), barytex_raster::RasterError>(())
 /// ```
-pub fn draw<S: Shader>(
-    target: &mut Framebuffer,
+pub fn draw<S: Shader, C: ColorFormat>(
+    target: &mut Framebuffer<C>,
     shader: &S,
     state: &PipelineState,
     vertices: &[S::Vertex],
@@ -215,7 +216,7 @@ pub fn draw<S: Shader>(
         .filter(|(index, _)| !bins[*index].is_empty())
         .map(|(index, (color, depth))| {
             let (tx, ty) = (index as i64 % tiles_x, index as i64 / tiles_x);
-            let mut tile_target = TileTarget {
+            let mut tile_target = TileTarget::<C> {
                 rect: [
                     (tx * tile).max(rect[0]),
                     (ty * tile).max(rect[1]),
