@@ -22,11 +22,11 @@ mod common;
 use std::hint::black_box;
 use std::time::Duration;
 
+use barytex_raster::{LinearRgba32f, Rgba8Unorm};
 use common::{
     ClipMesh, FLAT, NearestTexture, barytex_target, euc_targets, flat_u32, raster_only_barytex,
     raster_only_euc, render_barytex, render_euc,
 };
-use barytex_raster::{LinearRgba32f, Rgba8Unorm};
 use criterion::{Criterion, criterion_group, criterion_main};
 use glam::{Mat4, Vec2, Vec3, Vec4};
 

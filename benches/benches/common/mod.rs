@@ -7,9 +7,9 @@ use barytex_raster::{
     ColorFormat, CullMode, Fragment, Framebuffer, PipelineState, SamplePattern, Shader,
     TargetLimits, draw,
 };
-use euc::{Pipeline, Target};
 use euc::buffer::Buffer2d;
 use euc::rasterizer::{BackfaceCullingDisabled, Triangles};
+use euc::{Pipeline, Target};
 use glam::{Vec2, Vec3, Vec4};
 
 /// Clip positions (z in [0, w]), uvs and normals per vertex; triangles as index triples.
@@ -270,9 +270,10 @@ pub(crate) fn raster_only_euc<P: Clone>(
 ) {
     color.clear(zero);
     depth.clear(1.0);
-    ConstantPipeline { mesh, pixel }.draw::<Triangles<'_, Buffer2d<f32>, BackfaceCullingDisabled>, _>(
-        &mesh.indices,
-        color,
-        Some(depth),
-    );
+    ConstantPipeline { mesh, pixel }
+        .draw::<Triangles<'_, Buffer2d<f32>, BackfaceCullingDisabled>, _>(
+            &mesh.indices,
+            color,
+            Some(depth),
+        );
 }

@@ -8,8 +8,8 @@ use rayon::prelude::*;
 
 use crate::Shader;
 use crate::assemble::{Piece, assemble};
-use crate::state::{PipelineState, Viewport};
 use crate::format::ColorFormat;
+use crate::state::{PipelineState, Viewport};
 use crate::target::{Framebuffer, TILE};
 use crate::tile::{TileTarget, shade_piece};
 
@@ -207,13 +207,20 @@ pub fn draw<S: Shader, C: ColorFormat>(
     let tile_pixels = (TILE * TILE) as usize;
     let tile_samples = tile_pixels * samples as usize;
     let mask = target.mask.as_deref();
-    // Each tile owns a contiguous slice of the tile-major buffers: no copies, no locks.
-    let tile_stats: Vec<DrawStats> = target
+    // Each tile owns a contiguous slice of the tile-major buffers: no copies, no locks. Only
+    // the tiles with work become jobs, one tile each: rayon's adaptive splitting over all the
+    // target's tiles handed out runs of tiles, and where an object covers part of the image
+    // one thread got most of the work (Suzanne at 1024², 2 threads: 74 % against 26 %).
+    let jobs: Vec<(usize, (&mut [C::Sample], &mut [f32]))> = target
         .color
-        .par_chunks_mut(tile_samples)
-        .zip(target.depth.par_chunks_mut(tile_samples))
+        .chunks_mut(tile_samples)
+        .zip(target.depth.chunks_mut(tile_samples))
         .enumerate()
         .filter(|(index, _)| !bins[*index].is_empty())
+        .collect();
+    let tile_stats: Vec<DrawStats> = jobs
+        .into_par_iter()
+        .with_max_len(1)
         .map(|(index, (color, depth))| {
             let (tx, ty) = (index as i64 % tiles_x, index as i64 / tiles_x);
             let mut tile_target = TileTarget::<C> {

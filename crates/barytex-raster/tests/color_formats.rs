@@ -90,7 +90,10 @@ fn rgba8_target_is_the_float_target_quantized() {
             assert_eq!(stored, Rgba8Unorm::store(p), "pixel ({x}, {y})");
             assert_eq!(bytes.depth(x, y), float.depth(x, y), "pixel ({x}, {y})");
             // What the accessor reads back is the byte's value.
-            assert_eq!(bytes.pixel(x, y), Some(Vec4::from_array(stored.map(|b| f32::from(b) / 255.0))));
+            assert_eq!(
+                bytes.pixel(x, y),
+                Some(Vec4::from_array(stored.map(|b| f32::from(b) / 255.0)))
+            );
             distinct.insert(stored);
         }
     }
@@ -109,7 +112,10 @@ fn rgba8_blending_rounds_once_per_write() {
     let (mut worst, mut differ) = (0.0_f32, 0);
     for y in 0..75 {
         for x in 0..97 {
-            let (p, q) = (float.pixel(x, y).expect("in"), bytes.pixel(x, y).expect("in"));
+            let (p, q) = (
+                float.pixel(x, y).expect("in"),
+                bytes.pixel(x, y).expect("in"),
+            );
             worst = worst.max((p - q).abs().max_element());
             differ += usize::from(Rgba8Unorm::store(p) != bytes.stored(x, y).expect("in"));
         }
@@ -130,9 +136,15 @@ fn rgba8_multisampled_resolves_like_the_float_target() {
     let mut edges = 0;
     for y in 0..75 {
         for x in 0..97 {
-            let (p, q) = (float.pixel(x, y).expect("in"), bytes.pixel(x, y).expect("in"));
+            let (p, q) = (
+                float.pixel(x, y).expect("in"),
+                bytes.pixel(x, y).expect("in"),
+            );
             // Each sample is rounded by half a step at most.
-            assert!((p - q).abs().max_element() <= 0.5 / 255.0 + 1e-6, "({x}, {y}): {p} {q}");
+            assert!(
+                (p - q).abs().max_element() <= 0.5 / 255.0 + 1e-6,
+                "({x}, {y}): {p} {q}"
+            );
             // Pixels on an edge: their samples differ.
             edges += usize::from(p != float.stored(x, y).expect("in"));
         }
@@ -151,7 +163,11 @@ fn srgb_target_is_the_float_target_encoded() {
     for y in 0..75 {
         for x in 0..97 {
             let p = float.pixel(x, y).expect("inside");
-            assert_eq!(srgb.stored(x, y), Some(Srgba8::from_linear(p).0), "({x}, {y})");
+            assert_eq!(
+                srgb.stored(x, y),
+                Some(Srgba8::from_linear(p).0),
+                "({x}, {y})"
+            );
             assert_eq!(srgb.depth(x, y), float.depth(x, y));
         }
     }
