@@ -128,6 +128,10 @@ pub(crate) fn writable_rect<C: ColorFormat>(
 
 /// Draws indexed triangles (`indices` in triples) into `target` and returns what happened.
 ///
+/// The target may store its colour in any [`ColorFormat`] (the float default, or 4 bytes per
+/// sample with [`Rgba8Unorm`](crate::Rgba8Unorm)); coverage, depth and the fragments shaded do
+/// not depend on it.
+///
 /// Runs on the current rayon thread pool; the output is bit-identical for any number of threads.
 /// Nothing panics on bad input: out-of-range indices, non-finite or huge positions, zero-area and
 /// fully clipped triangles are dropped and counted in [`DrawStats`].

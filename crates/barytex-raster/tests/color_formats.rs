@@ -105,10 +105,13 @@ fn rgba8_target_is_the_float_target_quantized() {
 #[test]
 fn rgba8_blending_rounds_once_per_write() {
     // Half-transparent triangles over an opaque clear: alpha stays 1, and each write's rounding
-    // error (½ step) is halved by every later layer, so the total stays under 1 step.
+    // error (½ step) is halved by every later layer, so the total stays under 1 step. Colours
+    // inside [0, 1]: the 8-bit target clamps every layer, the float target none.
     let clear = Vec4::new(0.0, 0.0, 0.0, 1.0);
-    let float = drawn::<LinearRgba32f>(SamplePattern::CENTRE, clear, Blend::Over, 0.5, WIDE);
-    let bytes = drawn::<Rgba8Unorm>(SamplePattern::CENTRE, clear, Blend::Over, 0.5, WIDE);
+    let (float, bytes) = (
+        drawn::<LinearRgba32f>(SamplePattern::CENTRE, clear, Blend::Over, 0.5, (0.0, 1.0)),
+        drawn::<Rgba8Unorm>(SamplePattern::CENTRE, clear, Blend::Over, 0.5, (0.0, 1.0)),
+    );
     let (mut worst, mut differ) = (0.0_f32, 0);
     for y in 0..75 {
         for x in 0..97 {
