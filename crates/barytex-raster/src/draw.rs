@@ -128,6 +128,9 @@ pub(crate) fn writable_rect<C: ColorFormat>(
     rect
 }
 
+/// A tile with work: its index and its slices of the colour and depth buffers.
+type TileJob<'a, C> = (usize, (&'a mut [<C as ColorFormat>::Sample], &'a mut [f32]));
+
 /// Draws indexed triangles (`indices` in triples) into `target` and returns what happened.
 ///
 /// The target may store its colour in any [`ColorFormat`] (the float default, or 4 bytes per
@@ -217,7 +220,7 @@ pub fn draw<S: Shader, C: ColorFormat>(
     // the tiles with work become jobs, one tile each: rayon's adaptive splitting over all the
     // target's tiles handed out runs of tiles, and where an object covers part of the image
     // one thread got most of the work (Suzanne at 1024², 2 threads: 74 % against 26 %).
-    let jobs: Vec<(usize, (&mut [C::Sample], &mut [f32]))> = target
+    let jobs: Vec<TileJob<'_, C>> = target
         .color
         .chunks_mut(tile_samples)
         .zip(target.depth.chunks_mut(tile_samples))
