@@ -10,7 +10,10 @@
 //! term for the torus. barytex runs single-threaded (a 1-thread rayon pool) and with 2 threads.
 //!
 //! The `raster_only_*` groups isolate rasterization: a constant shader with one (unused)
-//! interpolated float and the same 16-byte RGBA f32 colour format on both sides, depth-tested.
+//! interpolated float and the same colour format on both sides, depth-tested — 4 bytes
+//! (barytex's `Rgba8Unorm` beside euc writing the same `u32`) and 16 bytes (RGBA f32 on both
+//! sides). The targets are allocated once, outside the timed loop, and cleared (colour and
+//! depth) in every iteration on both sides.
 //!
 //! Run with `cargo bench -p barytex-benches --bench raster`.
 
@@ -19,8 +22,10 @@ mod common;
 use std::hint::black_box;
 use std::time::Duration;
 
+use barytex_raster::{LinearRgba32f, Rgba8Unorm};
 use common::{
-    ClipMesh, NearestTexture, raster_only_barytex, raster_only_euc, render_barytex, render_euc,
+    ClipMesh, FLAT, NearestTexture, barytex_target, euc_targets, flat_u32, raster_only_barytex,
+    raster_only_euc, render_barytex, render_euc,
 };
 use criterion::{Criterion, criterion_group, criterion_main};
 use glam::{Mat4, Vec2, Vec3, Vec4};
@@ -106,16 +111,36 @@ fn bench(c: &mut Criterion) {
             b.iter(|| black_box(render_euc(&scene, &texture, lit, SIZE)));
         });
         group.finish();
-        // Rasterization alone: a constant shader and the same 16-byte colour format on both
-        // sides, so the shared shader's divisions and lookups do not hide the rasterizers.
+        // Rasterization alone: a constant shader and the same colour format on both sides, so
+        // the shared shader's divisions and lookups do not hide the rasterizers; targets
+        // allocated once, cleared per iteration on both sides.
+        let vertices: Vec<u32> = (0..scene.clip.len() as u32).collect();
         let mut group = c.benchmark_group(format!("raster_only_1024_{name}"));
-        group.bench_function("barytex_1_thread", |b| {
-            b.iter(|| one.install(|| black_box(raster_only_barytex(&scene, SIZE))));
+        let mut fb8 = barytex_target::<Rgba8Unorm>(SIZE);
+        let mut euc8 = euc_targets(SIZE, 0_u32);
+        let mut fb16 = barytex_target::<LinearRgba32f>(SIZE);
+        let mut euc16 = euc_targets(SIZE, [0.0_f32; 4]);
+        group.bench_function("barytex_rgba8", |b| {
+            b.iter(|| one.install(|| raster_only_barytex(&scene, &vertices, &mut fb8)));
         });
-        group.bench_function("euc", |b| {
-            b.iter(|| black_box(raster_only_euc(&scene, SIZE)));
+        group.bench_function("euc_u32", |b| {
+            b.iter(|| raster_only_euc(&scene, flat_u32(), 0, &mut euc8));
+        });
+        group.bench_function("barytex_f32x4", |b| {
+            b.iter(|| one.install(|| raster_only_barytex(&scene, &vertices, &mut fb16)));
+        });
+        group.bench_function("euc_f32x4", |b| {
+            b.iter(|| raster_only_euc(&scene, FLAT, [0.0; 4], &mut euc16));
         });
         group.finish();
+        // Both sides drew the same bytes over (nearly) the same pixels: the fill rules differ
+        // only on edges through pixel centres.
+        let ours = (0..SIZE * SIZE)
+            .filter(|i| fb8.stored(i % SIZE, i / SIZE) == Some(flat_u32().to_le_bytes()))
+            .count();
+        let theirs = euc8.0.as_ref().iter().filter(|&&p| p == flat_u32()).count();
+        eprintln!("raster_only_1024_{name}: covered pixels barytex {ours}, euc {theirs}");
+        black_box((&fb16, &euc16));
     }
 }
 

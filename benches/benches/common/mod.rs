@@ -3,10 +3,13 @@
 
 #![allow(dead_code)] // Each benchmark uses its part.
 
-use barytex_raster::{CullMode, Fragment, Framebuffer, PipelineState, Shader, TargetLimits, draw};
-use euc::Pipeline;
+use barytex_raster::{
+    ColorFormat, CullMode, Fragment, Framebuffer, PipelineState, SamplePattern, Shader,
+    TargetLimits, draw,
+};
 use euc::buffer::Buffer2d;
 use euc::rasterizer::{BackfaceCullingDisabled, Triangles};
+use euc::{Pipeline, Target};
 use glam::{Vec2, Vec3, Vec4};
 
 /// Clip positions (z in [0, w]), uvs and normals per vertex; triangles as index triples.
@@ -170,7 +173,13 @@ pub(crate) fn render_euc(
 }
 
 /// The constant colour of the rasterization-only comparison.
-const FLAT: [f32; 4] = [0.8, 0.5, 0.2, 1.0];
+pub(crate) const FLAT: [f32; 4] = [0.8, 0.5, 0.2, 1.0];
+
+/// [`FLAT`] as euc's 4-byte pixel: the same bytes barytex's `Rgba8Unorm` stores (`[r, g, b, a]`
+/// in memory, little-endian), rounded to nearest as it rounds.
+pub(crate) fn flat_u32() -> u32 {
+    u32::from_le_bytes(FLAT.map(|v| (v * 255.0 + 0.5) as u8))
+}
 
 /// barytex's side of the rasterization-only comparison: one interpolated float (unused), a
 /// constant colour.
@@ -189,52 +198,82 @@ impl Shader for ConstantShader<'_> {
     }
 }
 
-/// euc's side: the same vertices, one interpolated float, the same constant colour written as
-/// four f32 (the 16-byte pixel barytex's `Framebuffer` stores).
-struct ConstantPipeline<'a> {
+/// euc's side: the same vertices, one interpolated float, the same constant colour as the
+/// pixel type `P` (four f32, or the 4 bytes of [`flat_u32`]).
+struct ConstantPipeline<'a, P> {
     mesh: &'a ClipMesh,
+    pixel: P,
 }
 
-impl Pipeline for ConstantPipeline<'_> {
+impl<P: Clone> Pipeline for ConstantPipeline<'_, P> {
     type Vertex = u32;
     type VsOut = f32;
-    type Pixel = [f32; 4];
+    type Pixel = P;
     fn vert(&self, &i: &u32) -> ([f32; 4], f32) {
         (self.mesh.clip[i as usize].to_array(), 0.0)
     }
-    fn frag(&self, _: &f32) -> [f32; 4] {
-        FLAT
+    fn frag(&self, _: &f32) -> P {
+        self.pixel.clone()
     }
 }
 
-/// Rasterization alone on barytex: `mesh` with a constant shader into a new `size²` target,
-/// depth-tested, no culling.
-pub(crate) fn raster_only_barytex(mesh: &ClipMesh, size: u32) -> Framebuffer {
-    let mut fb = Framebuffer::new(size, size, Vec4::ZERO, &TargetLimits::default()).expect("size²");
+/// A barytex target for the rasterization-only comparison (allocated once, outside the timed
+/// loop: [`raster_only_barytex`] clears it).
+pub(crate) fn barytex_target<C: ColorFormat>(size: u32) -> Framebuffer<C> {
+    Framebuffer::<C>::with_format(
+        size,
+        size,
+        SamplePattern::CENTRE,
+        Vec4::ZERO,
+        &TargetLimits::default(),
+    )
+    .expect("size²")
+}
+
+/// Rasterization alone on barytex: clears `fb` (colour and depth), then draws `mesh` with a
+/// constant shader, depth-tested, no culling.
+pub(crate) fn raster_only_barytex<C: ColorFormat>(
+    mesh: &ClipMesh,
+    vertices: &[u32],
+    fb: &mut Framebuffer<C>,
+) {
+    fb.clear(Vec4::ZERO);
     let state = PipelineState {
         cull: CullMode::None,
         ..PipelineState::default()
     };
-    let vertices: Vec<u32> = (0..mesh.clip.len() as u32).collect();
     draw(
-        &mut fb,
+        fb,
         &ConstantShader { mesh },
         &state,
-        &vertices,
+        vertices,
         &mesh.indices,
     );
-    fb
 }
 
-/// Rasterization alone on euc: the same, into a 16-byte-per-pixel colour buffer and a depth
-/// buffer.
-pub(crate) fn raster_only_euc(mesh: &ClipMesh, size: u32) -> Buffer2d<[f32; 4]> {
-    let mut color = Buffer2d::new([size as usize, size as usize], [0.0_f32; 4]);
-    let mut depth = Buffer2d::new([size as usize, size as usize], 1.0_f32);
-    ConstantPipeline { mesh }.draw::<Triangles<'_, Buffer2d<f32>, BackfaceCullingDisabled>, _>(
-        &mesh.indices,
-        &mut color,
-        Some(&mut depth),
-    );
-    color
+/// An euc colour target and depth buffer (allocated once, outside the timed loop:
+/// [`raster_only_euc`] clears them).
+pub(crate) fn euc_targets<P: Clone>(size: u32, zero: P) -> (Buffer2d<P>, Buffer2d<f32>) {
+    (
+        Buffer2d::new([size as usize, size as usize], zero),
+        Buffer2d::new([size as usize, size as usize], 1.0_f32),
+    )
+}
+
+/// Rasterization alone on euc: clears the targets, then draws the same as
+/// [`raster_only_barytex`], writing `pixel`.
+pub(crate) fn raster_only_euc<P: Clone>(
+    mesh: &ClipMesh,
+    pixel: P,
+    zero: P,
+    (color, depth): &mut (Buffer2d<P>, Buffer2d<f32>),
+) {
+    color.clear(zero);
+    depth.clear(1.0);
+    ConstantPipeline { mesh, pixel }
+        .draw::<Triangles<'_, Buffer2d<f32>, BackfaceCullingDisabled>, _>(
+            &mesh.indices,
+            color,
+            Some(depth),
+        );
 }

@@ -45,13 +45,9 @@ pub(crate) fn fixed(v: f32) -> i64 {
     if x.abs() < 4_503_599_627_370_496.0 {
         let t = x as i64;
         let rest = x - t as f64;
-        if rest >= 0.5 {
-            t + 1
-        } else if rest <= -0.5 {
-            t - 1
-        } else {
-            t
-        }
+        // Without a branch: on arbitrary vertices which way a coordinate rounds is a coin toss
+        // for the branch predictor (cachegrind: ~3 mispredictions per triangle).
+        t + i64::from(rest >= 0.5) - i64::from(rest <= -0.5)
     } else {
         x.round() as i64
     }

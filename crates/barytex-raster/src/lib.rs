@@ -8,7 +8,7 @@
 //! | the seam | [`Shader`], [`Fragment`] |
 //! | the draw call | [`draw`] (triangles), [`draw_points`], [`draw_lines`] with a [`LineTopology`] (OpenGL 4.6 §14.4, §14.5: the diamond-exit rule), [`DrawStats`] |
 //! | state | [`PipelineState`], [`CullMode`], [`FrontFace`], [`Viewport`], [`Scissor`], [`DepthCompare`], [`Blend`], [`Interpolation`] |
-//! | targets | [`Framebuffer`] (one or more samples per pixel, tile-major storage) under [`TargetLimits`]; errors are [`RasterError`]s |
+//! | targets | [`Framebuffer`] (one or more samples per pixel, tile-major storage) under [`TargetLimits`], its colour in a [`ColorFormat`]: [`LinearRgba32f`] (16 bytes, the default), [`Rgba8Unorm`] (4 bytes), `Srgba8Unorm` (4 bytes, feature `texture`); errors are [`RasterError`]s |
 //! | masks | [`mask_samples`] (the samples a draw would write, as a one-bit stencil [`SampleMask`]) and [`Framebuffer::copy_samples`] (composite another target's samples through it) |
 //! | anti-aliasing | multisampled targets ([`Framebuffer::multisampled`] with a [`SamplePattern`]: regular, per-pixel jitter, the GPUs' standard positions) shaded per pixel (MSAA) or per sample; [`render_supersampled`] by accumulating passes; [`render_adaptive`] adds samples only where they disagree (up to 40) |
 //! | the scanline backend (Schaefer's lecture slides) | [`scanline::scanline_fill`]: Edge Table and Active Edge List, exact with rational arithmetic |
@@ -44,6 +44,7 @@ mod clip;
 mod draw;
 mod edge;
 mod error;
+mod format;
 mod primitives;
 mod sample_mask;
 mod samples;
@@ -58,6 +59,9 @@ pub use adaptive::{AdaptiveOptions, AdaptiveStats, render_adaptive};
 pub use draw::{DrawStats, draw};
 pub use edge::{MAX_COORDINATE, SUBPIXEL_BITS};
 pub use error::{RasterError, TargetLimits};
+#[cfg(feature = "texture")]
+pub use format::Srgba8Unorm;
+pub use format::{ColorFormat, LinearRgba32f, Rgba8Unorm};
 pub use primitives::{LineTopology, draw_lines, draw_points};
 pub use sample_mask::{SampleMask, mask_samples};
 pub use samples::{MAX_GRID, MAX_SAMPLES, SamplePattern};

@@ -9,28 +9,28 @@ use barytex_texture::{Limits, Rgba32f, Srgba8, Texel, Texture2d, TextureError};
 use glam::Vec4;
 
 use crate::error::{RasterError, TargetLimits, try_filled, try_filled_parallel};
+use crate::format::{ColorFormat, LinearRgba32f};
 use crate::samples::SamplePattern;
 
 /// Tile side in pixels: the unit of parallel work and of the buffers' layout.
 pub const TILE: u32 = 64;
 
-/// Bytes a target stores per sample: a premultiplied `Vec4` colour and an `f32` depth.
-const BYTES_PER_SAMPLE: u64 = 20;
-
-/// A colour buffer in linear light and a depth buffer of the same size, with
-/// [`samples`](Self::samples) per pixel.
+/// A colour buffer and a depth buffer of the same size, with [`samples`](Self::samples) per
+/// pixel; the colour stored in format `C` (a [`ColorFormat`]).
 ///
-/// Colours are stored premultiplied (so blending "over" is one multiply-add); every accessor
-/// returns straight alpha, resolved (averaged over the samples) where the target is
-/// multisampled.
+/// The default format, [`LinearRgba32f`], stores linear light premultiplied (so blending
+/// "over" is one multiply-add); [`Rgba8Unorm`](crate::Rgba8Unorm) stores 4 bytes per sample
+/// (see [`with_format`](Self::with_format)). Every accessor returns straight alpha in linear
+/// light, resolved (averaged over the samples) where the target is multisampled.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Framebuffer {
+pub struct Framebuffer<C: ColorFormat = LinearRgba32f> {
     width: u32,
     height: u32,
     tiles_x: u32,
     pattern: SamplePattern,
     samples: u32,
-    pub(crate) color: Vec<Vec4>,
+    format: C,
+    pub(crate) color: Vec<C::Sample>,
     pub(crate) depth: Vec<f32>,
     /// Pixels that may be written (`None`: all): one flag per pixel, tile layout.
     pub(crate) mask: Option<Vec<bool>>,
@@ -96,6 +96,41 @@ impl Framebuffer {
         clear: Vec4,
         limits: &TargetLimits,
     ) -> Result<Self, RasterError> {
+        Self::with_format(width, height, pattern, clear, limits)
+    }
+}
+
+impl<C: ColorFormat> Framebuffer<C> {
+    /// A target storing its colour in format `C`, with the samples of `pattern` in every pixel
+    /// (as [`Framebuffer::multisampled`]), cleared to `clear` (straight alpha) and depth 1. It
+    /// allocates `C`'s bytes plus 4 (the f32 depth) per sample of the padded target, and
+    /// `limits.max_bytes` bounds them.
+    ///
+    /// A 4-byte target ([`Rgba8Unorm`](crate::Rgba8Unorm)) moves a quarter of the float
+    /// target's colour bytes; [`draw`](crate::draw) writes it through the same pipeline.
+    ///
+    /// ```
+    /// use barytex_raster::{Framebuffer, Rgba8Unorm, SamplePattern, TargetLimits};
+    /// use glam::Vec4;
+    ///
+    /// let clear = Vec4::new(1.0, 0.5, 0.0, 1.0);
+    /// let fb = Framebuffer::<Rgba8Unorm>::with_format(100, 30, SamplePattern::CENTRE, clear,
+    ///     &TargetLimits::default())?;
+    /// assert_eq!(fb.stored(99, 29), Some([255, 128, 0, 255]));
+    /// assert_eq!(fb.pixel(0, 0), Some(Vec4::new(1.0, 128.0 / 255.0, 0.0, 1.0)));
+    /// assert_eq!(fb.depth(0, 0), Some(1.0));
+    /// # Ok::<(), barytex_raster::RasterError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Framebuffer::multisampled`].
+    pub fn with_format(
+        width: u32,
+        height: u32,
+        pattern: SamplePattern,
+        clear: Vec4,
+        limits: &TargetLimits,
+    ) -> Result<Self, RasterError> {
         pattern.validate()?;
         limits.check_sides(width, height)?;
         let samples = pattern.count();
@@ -106,12 +141,13 @@ impl Framebuffer {
             .checked_mul(u64::from(tiles_y))
             .and_then(|t| t.checked_mul(u64::from(TILE * TILE)))
             .and_then(|p| p.checked_mul(u64::from(samples)));
-        let bytes = n.and_then(|n| n.checked_mul(BYTES_PER_SAMPLE));
+        // Colour and an f32 depth per sample.
+        let bytes = n.and_then(|n| n.checked_mul(C::BYTES + 4));
         limits.check_bytes(bytes)?;
         // The bytes fit a usize, so the sample count does.
         let (n, bytes) = (n.unwrap_or(0) as usize, bytes.unwrap_or(0));
         let out_of_memory = |_| RasterError::OutOfMemory { bytes };
-        let color = try_filled_parallel(n, premultiply(clear)).map_err(out_of_memory)?;
+        let color = try_filled_parallel(n, C::store(clear)).map_err(out_of_memory)?;
         let depth = try_filled_parallel(n, 1.0_f32).map_err(out_of_memory)?;
         Ok(Self {
             width,
@@ -119,6 +155,7 @@ impl Framebuffer {
             tiles_x,
             pattern,
             samples,
+            format: C::default(),
             color,
             depth,
             mask: None,
@@ -183,8 +220,36 @@ impl Framebuffer {
     pub(crate) fn resolved(&self, x: u32, y: u32) -> Vec4 {
         let s = self.samples as usize;
         let i = self.pixel_index(x, y) * s;
-        let sum: Vec4 = self.color[i..i + s].iter().sum();
+        let sum: Vec4 = self.color[i..i + s].iter().map(|&c| C::load(c)).sum();
         sum / s as f32
+    }
+
+    /// The colour format.
+    #[must_use]
+    pub fn format(&self) -> C {
+        self.format
+    }
+
+    /// Pixel (x, y)'s first sample as stored (for [`Rgba8Unorm`](crate::Rgba8Unorm), its four
+    /// bytes; for the default format, the premultiplied colour); `None` outside.
+    ///
+    /// ```
+    /// use barytex_raster::{Framebuffer, Rgba8Unorm, SamplePattern, TargetLimits};
+    /// use glam::Vec4;
+    ///
+    /// let half = Vec4::new(1.0, 0.0, 0.0, 0.5);
+    /// let fb = Framebuffer::<Rgba8Unorm>::with_format(2, 2, SamplePattern::CENTRE, half,
+    ///     &TargetLimits::default())?;
+    /// assert_eq!(fb.stored(1, 1), Some([255, 0, 0, 128])); // straight alpha
+    /// assert_eq!(fb.stored(2, 0), None);
+    /// let float = Framebuffer::new(2, 2, half, &TargetLimits::default())?;
+    /// assert_eq!(float.stored(0, 0), Some(Vec4::new(0.5, 0.0, 0.0, 0.5))); // premultiplied
+    /// # Ok::<(), barytex_raster::RasterError>(())
+    /// ```
+    #[must_use]
+    pub fn stored(&self, x: u32, y: u32) -> Option<C::Sample> {
+        (x < self.width && y < self.height)
+            .then(|| self.color[self.pixel_index(x, y) * self.samples as usize])
     }
 
     /// The depth at pixel (x, y) (its first sample); `None` outside.
@@ -210,7 +275,7 @@ impl Framebuffer {
     /// ```
     pub fn clear(&mut self, color: Vec4) {
         use rayon::prelude::*;
-        let color = premultiply(color);
+        let color = C::store(color);
         // In tiles, in parallel on the current rayon pool.
         self.color
             .par_chunks_mut((TILE * TILE) as usize)

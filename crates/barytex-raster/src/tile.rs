@@ -6,18 +6,19 @@ use glam::{UVec2, Vec4};
 
 use crate::assemble::Piece;
 use crate::draw::DrawStats;
+use crate::format::ColorFormat;
 use crate::samples::SamplePattern;
 use crate::state::{Blend, DepthCompare, Interpolation, PipelineState};
 use crate::target::{TILE, premultiply};
 use crate::{Fragment, Shader};
 
 /// A tile's slice of the target and what it needs to address it.
-pub(crate) struct TileTarget<'a> {
+pub(crate) struct TileTarget<'a, C: ColorFormat> {
     /// `[x0, y0, x1, y1)`: the tile's pixels that may be written.
     pub(crate) rect: [i64; 4],
     /// The tile's top-left pixel.
     pub(crate) origin: (i64, i64),
-    pub(crate) color: &'a mut [Vec4],
+    pub(crate) color: &'a mut [C::Sample],
     pub(crate) depth: &'a mut [f32],
     /// One flag per pixel (tile-local), `None`: every pixel.
     pub(crate) mask: Option<&'a [bool]>,
@@ -25,7 +26,7 @@ pub(crate) struct TileTarget<'a> {
     pub(crate) samples: u32,
 }
 
-impl TileTarget<'_> {
+impl<C: ColorFormat> TileTarget<'_, C> {
     #[inline]
     fn local(&self, x: i64, y: i64) -> usize {
         ((y - self.origin.1) * i64::from(TILE) + (x - self.origin.0)) as usize
@@ -40,6 +41,12 @@ pub(crate) fn blend(state: &PipelineState, src: Vec4, dst: Vec4) -> Vec4 {
     }
 }
 
+/// [`blend`] of the premultiplied `src` over a stored sample, stored back in format `C`.
+#[inline]
+fn blend_stored<C: ColorFormat>(state: &PipelineState, src: Vec4, dst: C::Sample) -> C::Sample {
+    C::store_premultiplied(blend(state, src, C::load(dst)))
+}
+
 /// The perspective-correct weights at the two ends of the current span, for affine spans.
 struct SpanCache {
     row: i64,
@@ -50,11 +57,11 @@ struct SpanCache {
 }
 
 /// Rasterizes and shades one piece into the tile.
-pub(crate) fn shade_piece<S: Shader>(
+pub(crate) fn shade_piece<S: Shader, C: ColorFormat>(
     piece: &Piece<S::Varying>,
     shader: &S,
     state: &PipelineState,
-    tile: &mut TileTarget<'_>,
+    tile: &mut TileTarget<'_, C>,
     stats: &mut DrawStats,
 ) {
     if tile.samples == 1 {
@@ -65,11 +72,11 @@ pub(crate) fn shade_piece<S: Shader>(
 }
 
 /// One sample per pixel, at its centre.
-fn shade_single<S: Shader>(
+fn shade_single<S: Shader, C: ColorFormat>(
     piece: &Piece<S::Varying>,
     shader: &S,
     state: &PipelineState,
-    tile: &mut TileTarget<'_>,
+    tile: &mut TileTarget<'_, C>,
     stats: &mut DrawStats,
 ) {
     if let Interpolation::AffineSpans { span } = state.interpolation {
@@ -87,21 +94,21 @@ fn shade_single<S: Shader>(
     // get their own loop (the comparison a single instruction, the blend a store).
     match (state.depth_compare, state.blend) {
         (Some(DepthCompare::Less), Blend::Replace) => {
-            shade_centres::<S, _, false>(piece, shader, state, tile, stats, |z, s| z < s);
+            shade_centres::<S, C, _, false>(piece, shader, state, tile, stats, |z, s| z < s);
         }
         (Some(DepthCompare::LessEqual), Blend::Replace) => {
-            shade_centres::<S, _, false>(piece, shader, state, tile, stats, |z, s| z <= s);
+            shade_centres::<S, C, _, false>(piece, shader, state, tile, stats, |z, s| z <= s);
         }
         (Some(DepthCompare::Less), Blend::Over) => {
-            shade_centres::<S, _, true>(piece, shader, state, tile, stats, |z, s| z < s);
+            shade_centres::<S, C, _, true>(piece, shader, state, tile, stats, |z, s| z < s);
         }
         (op, Blend::Replace) => {
             let test = |z, s| op.is_none_or(|op: DepthCompare| op.passes(z, s));
-            shade_centres::<S, _, false>(piece, shader, state, tile, stats, test);
+            shade_centres::<S, C, _, false>(piece, shader, state, tile, stats, test);
         }
         (op, Blend::Over) => {
             let test = |z, s| op.is_none_or(|op: DepthCompare| op.passes(z, s));
-            shade_centres::<S, _, true>(piece, shader, state, tile, stats, test);
+            shade_centres::<S, C, _, true>(piece, shader, state, tile, stats, test);
         }
     }
 }
@@ -110,11 +117,11 @@ fn shade_single<S: Shader>(
 /// stage, then replace (`OVER` false) or "over" blending. Perspective-correct or affine
 /// weights; the results are those of [`blend`] and [`DepthCompare::passes`] pixel by pixel.
 #[inline]
-fn shade_centres<S: Shader, T: Fn(f32, f32) -> bool, const OVER: bool>(
+fn shade_centres<S: Shader, C: ColorFormat, T: Fn(f32, f32) -> bool, const OVER: bool>(
     piece: &Piece<S::Varying>,
     shader: &S,
     state: &PipelineState,
-    tile: &mut TileTarget<'_>,
+    tile: &mut TileTarget<'_, C>,
     stats: &mut DrawStats,
     passes: T,
 ) {
@@ -170,11 +177,11 @@ fn shade_centres<S: Shader, T: Fn(f32, f32) -> bool, const OVER: bool>(
                     discarded += 1;
                     continue;
                 };
-                let src = premultiply(c);
                 *color = if OVER {
-                    src + *color * (1.0 - src.w)
+                    let src = premultiply(c);
+                    C::store_premultiplied(src + C::load(*color) * (1.0 - src.w))
                 } else {
-                    src
+                    C::store(c)
                 };
                 if depth_write {
                     *stored = z;
@@ -187,11 +194,11 @@ fn shade_centres<S: Shader, T: Fn(f32, f32) -> bool, const OVER: bool>(
 }
 
 /// One sample per pixel with affine spans ([`Interpolation::AffineSpans`]).
-fn shade_spans<S: Shader>(
+fn shade_spans<S: Shader, C: ColorFormat>(
     piece: &Piece<S::Varying>,
     shader: &S,
     state: &PipelineState,
-    tile: &mut TileTarget<'_>,
+    tile: &mut TileTarget<'_, C>,
     stats: &mut DrawStats,
     span: i64,
 ) {
@@ -232,7 +239,7 @@ fn shade_spans<S: Shader>(
             stats.fragments_discarded += 1;
             return;
         };
-        tile.color[index] = blend(state, premultiply(c), tile.color[index]);
+        tile.color[index] = blend_stored::<C>(state, premultiply(c), tile.color[index]);
         if state.depth_write {
             tile.depth[index] = z;
         }
@@ -288,11 +295,11 @@ fn span_weights<V: Copy>(
 
 /// Several samples per pixel: coverage and depth per sample; shading per pixel (MSAA) or per
 /// sample.
-fn shade_multi<S: Shader>(
+fn shade_multi<S: Shader, C: ColorFormat>(
     piece: &Piece<S::Varying>,
     shader: &S,
     state: &PipelineState,
-    tile: &mut TileTarget<'_>,
+    tile: &mut TileTarget<'_, C>,
     stats: &mut DrawStats,
 ) {
     const ONE: i64 = 1 << crate::edge::SUBPIXEL_BITS;
@@ -386,7 +393,7 @@ fn shade_multi<S: Shader>(
                     continue;
                 };
                 let i = base + k as usize;
-                tile.color[i] = blend(state, src, tile.color[i]);
+                tile.color[i] = blend_stored::<C>(state, src, tile.color[i]);
                 if state.depth_write {
                     tile.depth[i] = depths[k as usize];
                 }
@@ -410,7 +417,7 @@ fn shade_multi<S: Shader>(
                     continue;
                 }
                 let i = base + k as usize;
-                tile.color[i] = blend(state, src, tile.color[i]);
+                tile.color[i] = blend_stored::<C>(state, src, tile.color[i]);
                 if state.depth_write {
                     tile.depth[i] = depths[k as usize];
                 }
