@@ -11,10 +11,8 @@
 //!   and 1 blended).
 //!
 //! - `trilinear_varying`: the same scan with derivatives that grow down the screen (×1 to ×1.5,
-//!   as under perspective; λ ≈ 0.68 … 1.26), so that neither side can compute the level of detail
-//!   once for the whole loop: with constant derivatives the compiler hoists the kernel's `log2`
-//!   out of the loop, while the sampler (whose level sizes are read through memory) pays for it
-//!   at every lookup.
+//!   as under perspective; λ ≈ 0.68 … 1.26): the level of detail changes from lookup to lookup,
+//!   as in a rasterizer, and about half of the lookups blend levels 1 and 2.
 //!
 //! Before the groups run, the largest difference between each kernel and the sampler over the
 //! scan is printed and must be within 2⁻²² (1 ulp at 0.5, relative to the [0, 1] range): both
