@@ -10,6 +10,10 @@
 //! - `trilinear`: the full linear-light mip chain, a footprint of 1.6 texels (λ ≈ 0.68, levels 0
 //!   and 1 blended).
 //!
+//! - `trilinear_varying`: the same scan with derivatives that grow down the screen (×1 to ×1.5,
+//!   as under perspective; λ ≈ 0.68 … 1.26): the level of detail changes from lookup to lookup,
+//!   as in a rasterizer, and about half of the lookups blend levels 1 and 2.
+//!
 //! Before the groups run, the largest difference between each kernel and the sampler over the
 //! scan is printed and must be within 2⁻²² (1 ulp at 0.5, relative to the [0, 1] range): both
 //! compute the same formulas; the kernel's level of detail is computed in f32 rather than f64.
@@ -143,6 +147,18 @@ fn trilinear_kernel(chain: &MipChain<Srgba8>, uv: Vec2, ddx: Vec2, ddy: Vec2) ->
     unpremultiply(a + (b - a) * (lod - floor))
 }
 
+/// `scan(texels)` with the derivatives of row `y` scaled by `1 + y / (2·SCAN)`.
+fn varying_scan(texels: f32) -> Vec<(Vec2, Vec2, Vec2)> {
+    let (uv, ddx, ddy) = scan(texels);
+    uv.into_iter()
+        .enumerate()
+        .map(|(i, uv)| {
+            let s = 1.0 + (i as u32 / SCAN) as f32 / (2 * SCAN) as f32;
+            (uv, ddx * s, ddy * s)
+        })
+        .collect()
+}
+
 fn max_difference(a: &[Vec4], b: &[Vec4]) -> f32 {
     a.iter()
         .zip(b)
@@ -189,22 +205,30 @@ fn bench(c: &mut Criterion) {
         |uv| trilinear.sample(uv, min_dx, min_dy),
         |uv| trilinear_kernel(&chain, uv, min_dx, min_dy),
     );
+    compare(
+        c,
+        "trilinear_varying",
+        &varying_scan(1.6),
+        |(uv, ddx, ddy)| trilinear.sample(uv, ddx, ddy),
+        |(uv, ddx, ddy)| trilinear_kernel(&chain, uv, ddx, ddy),
+    );
 }
 
 #[inline]
-fn fill(out: &mut [Vec4], uvs: &[Vec2], lookup: impl Fn(Vec2) -> Vec4) {
+fn fill<P: Copy>(out: &mut [Vec4], uvs: &[P], lookup: impl Fn(P) -> Vec4) {
     for (o, uv) in out.iter_mut().zip(uvs) {
         *o = lookup(*uv);
     }
 }
 
-/// Checks that the kernel gives the sampler's results, then times both in one group.
-fn compare(
+/// Checks that the kernel gives the sampler's results, then times both in one group. A lookup's
+/// input `P` is its coordinate, or its coordinate and derivatives.
+fn compare<P: Copy>(
     c: &mut Criterion,
     name: &str,
-    uvs: &[Vec2],
-    sampler: impl Fn(Vec2) -> Vec4,
-    kernel: impl Fn(Vec2) -> Vec4,
+    uvs: &[P],
+    sampler: impl Fn(P) -> Vec4,
+    kernel: impl Fn(P) -> Vec4,
 ) {
     let mut out = vec![Vec4::ZERO; uvs.len()];
     let mut reference = out.clone();

@@ -6,6 +6,8 @@ use glam::Vec2;
 use crate::addressing::linear_taps;
 use crate::{Rgba8, Texture2d, TextureError};
 
+#[cfg(target_arch = "x86_64")]
+mod bilinear_avx2;
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 mod bilinear_sse2;
 
@@ -14,8 +16,9 @@ mod bilinear_sse2;
 /// bottom-right, texel centres at `(x + ½)/w`).
 ///
 /// The blend runs in byte units with f32 weights (no per-texel division, no lookup tables),
-/// and is rounded once per channel; on x86-64 an SSE2 kernel computes the same bytes, four
-/// channels of a pixel per register; a non-finite coordinate gives transparent black. Colours are
+/// and is rounded once per channel; on x86-64 an AVX2 kernel (selected at run time where the CPU
+/// has AVX2 and FMA, two pixels per register) or else an SSE2 kernel (one pixel per register)
+/// computes the same bytes; a non-finite coordinate gives transparent black. Colours are
 /// blended as stored, which is exact for opaque images (translucent images: premultiply first or
 /// use [`TextureSampler`](crate::TextureSampler), which filters premultiplied).
 ///
@@ -46,6 +49,13 @@ pub fn remap_bilinear_rgba8(
             expected: coords.len() as u64,
             actual: out.len() as u64,
         });
+    }
+    #[cfg(target_arch = "x86_64")]
+    if bilinear_avx2::applies(source)
+        && let Some(simd) = bilinear_avx2::token()
+    {
+        bilinear_avx2::remap(simd, source, coords, out);
+        return Ok(());
     }
     #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
     if bilinear_sse2::applies(source) {
@@ -86,5 +96,74 @@ fn remap_scalar(source: &Texture2d<Rgba8>, coords: &[Vec2], out: &mut [Rgba8]) {
         let v = top + (bottom - top) * ty.frac + glam::Vec4::splat(0.5);
         // v ∈ [0.5, 255.5 + tiny]: the saturating cast truncates, i.e. rounds half up.
         *o = Rgba8(v.to_array().map(|c| c as u8));
+    }
+}
+
+/// Inputs shared by the kernels' bit-for-bit tests: random sources and coordinates inside, near
+/// and far outside the texture, on texel centres and edges, and non-finite ones.
+#[cfg(test)]
+pub(crate) mod test_inputs {
+    use glam::Vec2;
+
+    use crate::{Rgba8, Texture2d};
+
+    /// Deterministic pseudo-random numbers (xorshift), so a failure reproduces.
+    fn next(state: &mut u64) -> u64 {
+        *state ^= *state << 13;
+        *state ^= *state >> 7;
+        *state ^= *state << 17;
+        *state
+    }
+
+    pub(crate) fn texture(w: u32, h: u32, seed: u64) -> Texture2d<Rgba8> {
+        let mut s = seed;
+        Texture2d::from_fn(w, h, |_, _| {
+            let [r, g, b, a, ..] = next(&mut s).to_le_bytes();
+            Rgba8([r, g, b, a])
+        })
+        .expect("small")
+    }
+
+    /// Coordinates inside, near and far outside the texture, on texel centres and edges, and
+    /// non-finite ones.
+    pub(crate) fn coords(w: u32, h: u32, seed: u64) -> Vec<Vec2> {
+        let mut s = seed;
+        let mut c = Vec::new();
+        let specials = [
+            0.0,
+            -0.0,
+            1.0,
+            -1e-30,
+            1e-30,
+            0.5,
+            -3.0,
+            4.0,
+            1e30,
+            -1e30,
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::MIN_POSITIVE,
+        ];
+        for &a in &specials {
+            for &b in &specials {
+                c.push(Vec2::new(a, b));
+            }
+        }
+        for _ in 0..20_000 {
+            let r = next(&mut s);
+            let unit = |bits: u64| (bits & 0xffff_ffff) as f32 / u32::MAX as f32;
+            let u = unit(r) * 1.4 - 0.2;
+            let v = unit(r >> 32) * 1.4 - 0.2;
+            c.push(Vec2::new(u, v));
+            // Exactly on texel centres and texel edges.
+            let (i, j) = (
+                (r % u64::from(w + 2)) as f32 - 1.0,
+                ((r >> 20) % u64::from(h + 2)) as f32 - 1.0,
+            );
+            c.push(Vec2::new((i + 0.5) / w as f32, (j + 0.5) / h as f32));
+            c.push(Vec2::new(i / w as f32, j / h as f32));
+        }
+        c
     }
 }

@@ -94,6 +94,46 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// Power-of-two sides under repeat addressing take the trilinear path that masks indices
+    /// (random sides above rarely are powers of two): far-away, huge and texel-aligned
+    /// coordinates included.
+    #[test]
+    fn repeat_power_of_two_path_equals_the_general_path(
+        log_w in 0_u32..7,
+        log_h in 0_u32..7,
+        seed in any::<u64>(),
+        uv in (-3.0e3_f32..3.0e3, -3.0_f32..3.0),
+        scale in prop_oneof![Just(1.0_f32), Just(1e-3), Just(1e6), Just(1e30)],
+        ddx in (-0.5_f32..0.5, -0.5_f32..0.5),
+        ddy in (-0.5_f32..0.5, -0.5_f32..0.5),
+    ) {
+        let base = texture(1 << log_w, 1 << log_h, seed);
+        let chain = MipChain::generate(base, &MipOptions::default()).expect("small");
+        let repeat = SamplerDescriptor::trilinear().with_address_mode(AddressMode::Repeat);
+        let clamped = SamplerDescriptor { lod_min_clamp: 0.5, lod_max_clamp: 2.25, ..repeat };
+        let (ddx, ddy) = (Vec2::from(ddx), Vec2::from(ddy));
+        let uv = Vec2::new(uv.0 * scale, uv.1);
+        let aligned = Vec2::new(
+            (uv.x * 4.0).round() / (4 << log_w) as f32,
+            (uv.y * 4.0).round() / (4 << log_h) as f32,
+        );
+        for descriptor in [repeat, clamped] {
+            let sampler = TextureSampler::new(chain.clone(), descriptor);
+            let lod = sampler.lod(ddx, ddy, 0.0);
+            for uv in [uv, aligned, Vec2::new(uv.y, uv.x)] {
+                prop_assert_eq!(
+                    bits(sampler.sample(uv, ddx, ddy)),
+                    bits(sampler.sample_level(uv, lod)),
+                    "{:?} at {:?}, lod {}", descriptor, uv, lod
+                );
+            }
+        }
+    }
+}
+
 #[test]
 fn short_paths_keep_the_documented_values_for_bad_input() {
     let sampler = TextureSampler::single_level(texture(4, 4, 7), SamplerDescriptor::bilinear());

@@ -45,8 +45,12 @@ pub(super) fn applies(source: &Texture2d<Rgba8>) -> bool {
 /// The texel pair `(i, i + 1)` as one little-endian `u64` (texel `i` in the low bytes).
 #[inline(always)]
 fn pair(texels: &[Rgba8], i: usize) -> i64 {
-    let [a, b] = [texels[i].0, texels[i + 1].0];
-    i64::from(u32::from_le_bytes(a)) | (i64::from(u32::from_le_bytes(b)) << 32)
+    // One bounds check for both texels, and bytes in memory order: one 8-byte load (two 4-byte
+    // loads joined by a shift and an or did not merge).
+    let [Rgba8([a0, a1, a2, a3]), Rgba8([b0, b1, b2, b3])] = texels[i..i + 2] else {
+        unreachable!("a slice of two")
+    };
+    i64::from_le_bytes([a0, a1, a2, a3, b0, b1, b2, b3])
 }
 
 /// `a + (b − a)·t`, lane-wise.
@@ -158,66 +162,7 @@ fn one(k: &Kernel<'_>, uv: Vec2) -> Rgba8 {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// Deterministic pseudo-random numbers (xorshift), so a failure reproduces.
-    fn next(state: &mut u64) -> u64 {
-        *state ^= *state << 13;
-        *state ^= *state >> 7;
-        *state ^= *state << 17;
-        *state
-    }
-
-    fn texture(w: u32, h: u32, seed: u64) -> Texture2d<Rgba8> {
-        let mut s = seed;
-        Texture2d::from_fn(w, h, |_, _| {
-            let [r, g, b, a, ..] = next(&mut s).to_le_bytes();
-            Rgba8([r, g, b, a])
-        })
-        .expect("small")
-    }
-
-    /// Coordinates inside, near and far outside the texture, on texel centres and edges, and
-    /// non-finite ones.
-    fn coords(w: u32, h: u32, seed: u64) -> Vec<Vec2> {
-        let mut s = seed;
-        let mut c = Vec::new();
-        let specials = [
-            0.0,
-            -0.0,
-            1.0,
-            -1e-30,
-            1e-30,
-            0.5,
-            -3.0,
-            4.0,
-            1e30,
-            -1e30,
-            f32::NAN,
-            f32::INFINITY,
-            f32::NEG_INFINITY,
-            f32::MIN_POSITIVE,
-        ];
-        for &a in &specials {
-            for &b in &specials {
-                c.push(Vec2::new(a, b));
-            }
-        }
-        for _ in 0..20_000 {
-            let r = next(&mut s);
-            let unit = |bits: u64| (bits & 0xffff_ffff) as f32 / u32::MAX as f32;
-            let u = unit(r) * 1.4 - 0.2;
-            let v = unit(r >> 32) * 1.4 - 0.2;
-            c.push(Vec2::new(u, v));
-            // Exactly on texel centres and texel edges.
-            let (i, j) = (
-                (r % u64::from(w + 2)) as f32 - 1.0,
-                ((r >> 20) % u64::from(h + 2)) as f32 - 1.0,
-            );
-            c.push(Vec2::new((i + 0.5) / w as f32, (j + 0.5) / h as f32));
-            c.push(Vec2::new(i / w as f32, j / h as f32));
-        }
-        c
-    }
+    use crate::remap::test_inputs::{coords, texture};
 
     #[test]
     fn sse2_kernel_matches_the_scalar_path_bit_for_bit() {

@@ -27,6 +27,7 @@ use glam::Vec2;
 /// assert_eq!(lod(Vec2::NAN, Vec2::ZERO, (256, 256)), f32::INFINITY);
 /// ```
 #[must_use]
+#[inline]
 pub fn lod(ddx: Vec2, ddy: Vec2, size: (u32, u32)) -> f32 {
     let rho_squared = footprint_squared(ddx, ddy, size);
     if rho_squared.is_nan() || rho_squared == f64::INFINITY {
@@ -38,6 +39,7 @@ pub fn lod(ddx: Vec2, ddy: Vec2, size: (u32, u32)) -> f32 {
 /// `ρ²` in f64: the larger squared length of the two derivative vectors in texels. NaN if a
 /// derivative is NaN.
 #[must_use]
+#[inline]
 pub(crate) fn footprint_squared(ddx: Vec2, ddy: Vec2, size: (u32, u32)) -> f64 {
     let (w, h) = (f64::from(size.0), f64::from(size.1));
     let len2 = |d: Vec2| {

@@ -5,8 +5,8 @@ use glam::{Vec2, Vec4};
 
 use crate::sampler::texel_fetch::{Addressing, premultiply, unpremultiply};
 use crate::sampler::{
-    AnisotropicFilter, FilterMode, MipmapFilterMode, Sampler, SamplerDescriptor, anisotropic,
-    compare, ewa, level_filters, lod,
+    AddressMode, AnisotropicFilter, FilterMode, MipmapFilterMode, Sampler, SamplerDescriptor,
+    anisotropic, compare, ewa, level_filters, lod,
 };
 use crate::{MipChain, Texel, Texture2d};
 
@@ -74,21 +74,33 @@ enum LookupPath {
     SingleLevelBilinear,
     /// Bilinear within levels, linear between them, no anisotropy (trilinear).
     Trilinear,
+    /// [`Trilinear`](Self::Trilinear) under repeat addressing on both axes over levels whose
+    /// sides are all powers of two: the address mode resolved at construction (a mask per axis).
+    TrilinearRepeatPow2,
     /// Anything else.
     General,
 }
 
 impl LookupPath {
-    fn of(d: &SamplerDescriptor, levels: usize) -> Self {
+    fn of<T: Texel>(d: &SamplerDescriptor, levels: &[Texture2d<T>]) -> Self {
         let filter = (d.mag_filter == d.min_filter).then_some(d.mag_filter);
+        let repeat_pow2 = d.address_mode_u == AddressMode::Repeat
+            && d.address_mode_v == AddressMode::Repeat
+            && levels.iter().all(|level| {
+                let (w, h) = level.size();
+                w.is_power_of_two() && h.is_power_of_two()
+            });
         match (
             filter,
             d.anisotropy_clamp <= 1,
-            levels == 1,
+            levels.len() == 1,
             d.mipmap_filter,
         ) {
             (Some(FilterMode::Nearest), true, true, _) => Self::SingleLevelNearest,
             (Some(FilterMode::Linear), true, true, _) => Self::SingleLevelBilinear,
+            (Some(FilterMode::Linear), true, false, MipmapFilterMode::Linear) if repeat_pow2 => {
+                Self::TrilinearRepeatPow2
+            }
             (Some(FilterMode::Linear), true, false, MipmapFilterMode::Linear) => Self::Trilinear,
             _ => Self::General,
         }
@@ -120,7 +132,7 @@ impl<T: Texel> TextureSampler<T> {
     pub fn new(chain: MipChain<T>, descriptor: SamplerDescriptor) -> Self {
         let d = descriptor.sanitized();
         let addressing = Addressing::new(d.address_mode_u, d.address_mode_v, d.border_color);
-        let path = LookupPath::of(&d, chain.len());
+        let path = LookupPath::of(&d, chain.levels());
         Self {
             chain,
             descriptor: d,
@@ -226,6 +238,7 @@ impl<T: Texel> TextureSampler<T> {
     }
 
     /// Bias and clamp a level of detail (NaN → the maximum level, as an unmeasurable footprint).
+    #[inline]
     fn clamp_lod(&self, lod: f32) -> f32 {
         let d = &self.descriptor;
         let biased = lod + d.lod_bias;
@@ -255,6 +268,18 @@ impl<T: Texel> TextureSampler<T> {
                 unpremultiply(self.across_levels(lod, |level, _| {
                     level_filters::bilinear(&levels[level], uv, &self.addressing)
                 }))
+            }
+            LookupPath::TrilinearRepeatPow2 => {
+                // `across_levels` for this configuration (both filters linear, linear between
+                // levels) written out, so that both levels' lookups inline into the caller.
+                let lod = self.clamp_lod(lod::lod(ddx, ddy, self.chain.base().size()) + bias);
+                let (lo, hi, t) = linear_levels(lod, levels.len() - 1);
+                let a = level_filters::bilinear_repeat_pow2(&levels[lo], uv);
+                if hi == lo {
+                    return unpremultiply(a);
+                }
+                let b = level_filters::bilinear_repeat_pow2(&levels[hi], uv);
+                unpremultiply(a + (b - a) * t)
             }
             LookupPath::General => self.sample_general(uv, ddx, ddy, bias),
         }
@@ -315,15 +340,13 @@ impl<T: Texel> TextureSampler<T> {
                 filter_level(to_level(level, last), d.min_filter)
             }
             MipmapFilterMode::Linear => {
-                let floor = floor_f32(lod);
-                let lo = to_level(floor, last);
-                let hi = to_level(floor + 1.0, last);
+                let (lo, hi, t) = linear_levels(lod, last);
                 let a = filter_level(lo, d.min_filter);
                 if hi == lo {
                     return a;
                 }
                 let b = filter_level(hi, d.min_filter);
-                a + (b - a) * (lod - floor)
+                a + (b - a) * t
             }
         }
     }
@@ -430,6 +453,22 @@ fn nearest_inside_first<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing
         return premultiply(level.texels()[j * w as usize + i].to_linear());
     }
     level_filters::nearest(level, uv, a)
+}
+
+/// Vulkan's linear blend between levels at a (biased, clamped) level of detail: the levels
+/// `⌊λ⌋` and `⌊λ⌋ + 1` clamped to the chain (equal at its end, where only the first is read) and
+/// the weight `λ − ⌊λ⌋` of the second. Level 0 alone below λ = 0 (magnification): `lo = hi = 0`.
+#[inline(always)]
+fn linear_levels(lod: f32, last: usize) -> (usize, usize, f32) {
+    if lod <= 0.0 {
+        return (0, 0, 0.0);
+    }
+    let floor = floor_f32(lod);
+    (
+        to_level(floor, last),
+        to_level(floor + 1.0, last),
+        lod - floor,
+    )
 }
 
 /// `x.floor()` without the library call it is on the x86-64 baseline (no SSE4.1): truncation,
