@@ -63,12 +63,18 @@ def meshes():
     return found
 
 
+class DoesNotFit(Exception):
+    """barytex refused a layout whose charts do not fit the atlas (too many for the padding)."""
+
+
 def barytex(binary, source, out_dir, extra):
     args = [binary, "unwrap", *source, "--layout", os.path.join(out_dir, "layout.png"), *extra]
     if source[0] != "--mesh":
         args += ["-o", os.path.join(out_dir, "out.gltf")]
     done = subprocess.run(args, capture_output=True, text=True)
     if done.returncode != 0:
+        if "do not fit" in done.stderr:
+            raise DoesNotFit(done.stderr.strip().removeprefix("barytex: "))
         raise SystemExit(f"{' '.join(args)}:\n{done.stdout}{done.stderr}")
 
 
@@ -125,6 +131,7 @@ def pareto_svg(rows, path):
     import math
 
     w, h, m = 640, 400, 60
+    rows = [r for r in rows if "refused" not in r]
     times = [r["ms"] for r in rows if r["ms"] > 0]
     finite = [r for r in rows if isinstance(r["angle_mean"], float)]
     dist = [r["angle_mean"] for r in finite]
@@ -205,14 +212,18 @@ def main():
             xatlas_row = None
             for method in methods:
                 stats, seconds, checks = [], [], []
-                for _ in range(args.runs):
-                    out = os.path.join(tmp, "stats.json")
-                    barytex(binary, source, tmp, common + ["--method", method, "--compare-uvs", peer, "--stats-json", out])
-                    with open(out) as f:
-                        stats = json.load(f)
-                    s = stats["seconds"]
-                    seconds.append(s["weld"] + s["charts"] + s["pack"])
-                    checks.append(s["check"])
+                try:
+                    for _ in range(args.runs):
+                        out = os.path.join(tmp, "stats.json")
+                        barytex(binary, source, tmp, common + ["--method", method, "--compare-uvs", peer, "--stats-json", out])
+                        with open(out) as f:
+                            stats = json.load(f)
+                        s = stats["seconds"]
+                        seconds.append(s["weld"] + s["charts"] + s["pack"])
+                        checks.append(s["check"])
+                except DoesNotFit as refused:
+                    rows.append({"mesh": name, "method": method, "refused": str(refused)})
+                    continue
                 ours = stats["meshes"][0]
                 rows.append({"mesh": name, "method": method, "ms": 1e3 * statistics.median(seconds),
                              "check_ms": 1e3 * statistics.median(checks), **ours})
@@ -225,6 +236,9 @@ def main():
               "| efficiency | angle mean / max | area mean / max |")
     lines = [header, "|" + "---|" * 10]
     for r in rows:
+        if "refused" in r:
+            lines.append(f"| {r['mesh']} | {r['method']} | {r['refused']} |" + " |" * 7)
+            continue
         atl = f" ({r['atlases']} atlases)" if r.get("atlases", 1) != 1 else ""
         if "size" in r:
             w, h = r["size"]
