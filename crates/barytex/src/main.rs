@@ -261,15 +261,15 @@ struct UnwrapArgs {
     no_rotate: bool,
     /// Segmentation cone in degrees (0 to 180]: a chart's normals stay this close to its mean
     /// normal; smaller gives more, flatter charts (default: the library's).
-    #[arg(long, value_name = "DEGREES")]
+    #[arg(long, value_name = "DEGREES", value_parser = unwrap_cmd::parse_cone)]
     cone: Option<f64>,
     /// Split a chart whose mean angle distortion σ1/σ2 exceeds this (at least 1; default: the
     /// library's). Free-boundary methods only.
-    #[arg(long, value_name = "RATIO")]
+    #[arg(long, value_name = "RATIO", value_parser = unwrap_cmd::parse_ratio)]
     max_angle_distortion: Option<f64>,
     /// Split a chart whose mean area distortion exceeds this (at least 1; default: the
     /// library's). Free-boundary methods only.
-    #[arg(long, value_name = "RATIO")]
+    #[arg(long, value_name = "RATIO", value_parser = unwrap_cmd::parse_ratio)]
     max_area_distortion: Option<f64>,
     /// ARAP iterations at most, for lscm-arap (default: the library's).
     #[arg(long, value_name = "N")]

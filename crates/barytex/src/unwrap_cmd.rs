@@ -82,6 +82,24 @@ impl MethodArg {
     }
 }
 
+/// Parses `--cone`: degrees in `(0, 180]`.
+pub(crate) fn parse_cone(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(d) if d > 0.0 && d <= 180.0 => Ok(d),
+        _ => Err("expected degrees above 0 and at most 180".to_owned()),
+    }
+}
+
+/// Parses a distortion limit: a ratio of at least 1 (infinity allowed: never split).
+pub(crate) fn parse_ratio(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(r) if r >= 1.0 => Ok(r),
+        _ => {
+            Err("expected a ratio of at least 1 (1 is no distortion; inf never splits)".to_owned())
+        }
+    }
+}
+
 /// Where the mesh comes from.
 pub(crate) enum Source {
     /// A glTF or GLB file.

@@ -259,19 +259,19 @@ fn bad_unwrap_input_is_an_error_not_a_panic() {
             ["unwrap", "--mesh", "torus", "--cone", "0"]
                 .map(String::from)
                 .to_vec(),
-            "cone_degrees is out of range",
+            "--cone <DEGREES>",
         ),
         (
             ["unwrap", "--mesh", "torus", "--cone", "NaN"]
                 .map(String::from)
                 .to_vec(),
-            "cone_degrees is out of range",
+            "above 0 and at most 180",
         ),
         (
             ["unwrap", "--mesh", "torus", "--max-angle-distortion", "0.5"]
                 .map(String::from)
                 .to_vec(),
-            "max_angle_distortion is out of range",
+            "--max-angle-distortion <RATIO>",
         ),
     ];
     if let Some(model) = gltf_fixture("Suzanne/glTF/Suzanne.gltf") {
