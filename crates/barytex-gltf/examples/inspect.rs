@@ -6,17 +6,18 @@
 //! and loads that. The `barytex-render` crate's `render_gltf` example draws a model.
 
 use std::error::Error;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use barytex_gltf::{LoadOptions, SceneLimits, load_path};
-use barytex_testkit::sample_model::write_textured_quad;
+use barytex_texture::load::save_png;
+use barytex_texture::{Srgba8, Texture2d};
 
 fn main() -> Result<(), Box<dyn Error>> {
     let path = match std::env::args_os().nth(1) {
         Some(path) => PathBuf::from(path),
-        None => write_textured_quad(
-            &std::env::temp_dir().join(format!("barytex-quad-{}", std::process::id())),
-        )?,
+        None => {
+            write_quad(&std::env::temp_dir().join(format!("barytex-quad-{}", std::process::id())))?
+        }
     };
     // Files are untrusted: every size is checked against the limits before it is allocated.
     let options = LoadOptions {
@@ -84,4 +85,60 @@ fn main() -> Result<(), Box<dyn Error>> {
     }
     println!("  {:?}", scene.stats);
     Ok(())
+}
+
+/// Writes a small model to `dir`: `quad.gltf`, its buffer `quad.bin` and its base-colour image
+/// `checker.png` (relative URIs, read from the model's own folder), a textured square tilted
+/// 45° about x. Returns the path of `quad.gltf`.
+fn write_quad(dir: &Path) -> Result<PathBuf, Box<dyn Error>> {
+    std::fs::create_dir_all(dir)?;
+    let positions = [
+        [-1.0f32, -1.0, 0.0],
+        [1.0, -1.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [-1.0, 1.0, 0.0],
+    ];
+    let uvs = [[0.0f32, 4.0], [4.0, 4.0], [4.0, 0.0], [0.0, 0.0]];
+    let indices = [0u16, 1, 2, 0, 2, 3];
+    let mut bin: Vec<u8> = positions
+        .iter()
+        .flatten()
+        .flat_map(|c| c.to_le_bytes())
+        .collect();
+    bin.extend(uvs.iter().flatten().flat_map(|c| c.to_le_bytes()));
+    bin.extend(indices.iter().flat_map(|i| i.to_le_bytes()));
+    std::fs::write(dir.join("quad.bin"), &bin)?;
+    let checker = Texture2d::from_fn(64, 64, |x, y| {
+        Srgba8(if (x / 8 + y / 8) % 2 == 0 {
+            [240, 180, 40, 255]
+        } else {
+            [40, 70, 150, 255]
+        })
+    })?;
+    save_png(&checker, dir.join("checker.png"))?;
+    let gltf = format!(
+        r#"{{
+  "asset": {{"version": "2.0"}},
+  "buffers": [{{"uri": "quad.bin", "byteLength": {}}}],
+  "bufferViews": [{{"buffer": 0, "byteOffset": 0, "byteLength": 48}},
+                  {{"buffer": 0, "byteOffset": 48, "byteLength": 32}},
+                  {{"buffer": 0, "byteOffset": 80, "byteLength": 12}}],
+  "accessors": [{{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+                  "min": [-1, -1, 0], "max": [1, 1, 0]}},
+                {{"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"}},
+                {{"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}}],
+  "images": [{{"uri": "checker.png"}}],
+  "textures": [{{"source": 0}}],
+  "materials": [{{"name": "checker", "doubleSided": true,
+                  "pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0}}, "metallicFactor": 0}}}}],
+  "meshes": [{{"name": "quad", "primitives": [{{"attributes": {{"POSITION": 0, "TEXCOORD_0": 1}},
+                                               "indices": 2, "material": 0}}]}}],
+  "nodes": [{{"name": "tilted quad", "mesh": 0, "rotation": [-0.38268343, 0, 0, 0.9238795]}}],
+  "scenes": [{{"nodes": [0]}}]
+}}"#,
+        bin.len()
+    );
+    let path = dir.join("quad.gltf");
+    std::fs::write(&path, gltf)?;
+    Ok(path)
 }

@@ -26,7 +26,6 @@ pub mod invariants_3d;
 pub mod polygon_invariants;
 pub mod precise;
 pub mod reference;
-pub mod sample_model;
 pub mod sampling_invariants;
 pub mod seeded;
 pub mod sphere;
