@@ -90,7 +90,7 @@ pub(crate) fn grow_charts(
     charts
 }
 
-/// Splits the region `faces` (`mark[f] == stamp` exactly for its faces) in two: the faces
+/// Splits the region `faces` (non-empty, each face once) in two: the faces
 /// connected to the first face and the rest when it is disconnected, otherwise the two halves
 /// nearer (in dual-graph steps) to each of two far-apart faces found by a double breadth-first
 /// sweep. Each part is connected (a breadth-first tree) and non-empty for two or more faces.
