@@ -60,7 +60,8 @@ impl Barycentric3d {
 /// For all finite input (any distance of `p` from the triangle, any scale), each weight is
 /// within `1 ulp + 2⁻⁴⁶·κ` of the exact rational weight of the projected point,
 /// `κ = max(|p|, |a|, |b|, |c|) · max edge length / |2·area|`; a weight whose exact value is
-/// beyond f32's range is the infinity of its sign. Derivation: the weight of `a` is computed as
+/// beyond f32's range is an infinity, of its sign unless that value is itself within the
+/// f64 error `2⁻⁴⁹·κ` below (an input so ill-conditioned that rounding decides the sign). Derivation: the weight of `a` is computed as
 /// `((b − p) × (c − b))·n / |n|²` in f64 from the exact f32 inputs; its numerator's rounding
 /// error is at most `8·2⁻⁵³·|b − p|·|c − b|·|n|`, so the weight's is at most
 /// `16·2⁻⁵³·κ = 2⁻⁴⁹·κ` before the final rounding to f32, and `n`'s own `2⁻³⁰` relative error
