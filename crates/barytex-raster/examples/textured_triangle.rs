@@ -39,7 +39,8 @@ impl Shader for Textured {
 
     fn fragment(&self, f: &Fragment<'_, Vec2>) -> Option<Vec4> {
         // The uvs' change per pixel, exact (not a 2×2-quad difference): the sampler's footprint.
-        Some(self.sampler.sample(f.varying, f.ddx(), f.ddy()))
+        let (ddx, ddy) = f.derivatives();
+        Some(self.sampler.sample(f.varying, ddx, ddy))
     }
 }
 

@@ -100,17 +100,26 @@ impl<V: Copy> PieceContext<V> {
         }
     }
 
-    /// The weights' derivatives along `axis` (0 = x, 1 = y): zero-sum weights.
-    fn derivative_weights(&self, lambda: [f64; 3], axis: usize) -> [f64; 3] {
-        let g: [f64; 3] = core::array::from_fn(|i| self.grads[i][axis]);
+    /// The weights' derivatives along x and along y: zero-sum weights each.
+    #[inline]
+    fn derivative_weights(&self, lambda: [f64; 3]) -> [[f64; 3]; 2] {
+        let g = |axis: usize| -> [f64; 3] { core::array::from_fn(|i| self.grads[i][axis]) };
         match self.interpolation {
-            Interpolation::Affine => g,
+            Interpolation::Affine => [g(0), g(1)],
             Interpolation::Perspective | Interpolation::AffineSpans { .. } => {
-                // (q′ᵢ·D − qᵢ·D′)/D² with qᵢ = λᵢ/wᵢ, D = Σq.
+                // (q′ᵢ·D − qᵢ·D′)/D² with qᵢ = λᵢ/wᵢ, D = Σq; q, D and D² are shared by both
+                // axes (the same operations, in the same order, as one axis at a time).
                 let q: [f64; 3] = core::array::from_fn(|i| lambda[i] * self.inv_w[i]);
-                let qd: [f64; 3] = core::array::from_fn(|i| g[i] * self.inv_w[i]);
-                let (d, dd) = (q.iter().sum::<f64>(), qd.iter().sum::<f64>());
-                core::array::from_fn(|i| (qd[i] * d - q[i] * dd) / (d * d))
+                let d = q.iter().sum::<f64>();
+                let d2 = d * d;
+                // A closure called twice, not `[0, 1].map(…)`: the array map is not inlined.
+                let along = |axis: usize| -> [f64; 3] {
+                    let g = g(axis);
+                    let qd: [f64; 3] = core::array::from_fn(|i| g[i] * self.inv_w[i]);
+                    let dd = qd.iter().sum::<f64>();
+                    core::array::from_fn(|i| (qd[i] * d - q[i] * dd) / d2)
+                };
+                [along(0), along(1)]
             }
         }
     }
@@ -154,15 +163,55 @@ impl<V: Interpolate> Fragment<'_, V> {
     /// ```
     #[must_use]
     pub fn ddx(&self) -> V {
-        let w = self.piece.derivative_weights(self.lambda, 0);
+        let [w, _] = self.piece.derivative_weights(self.lambda);
         V::combine3(self.piece.varyings, self.piece.input_weights(w))
     }
 
     /// The varying's change per pixel down.
     #[must_use]
     pub fn ddy(&self) -> V {
-        let w = self.piece.derivative_weights(self.lambda, 1);
+        let [_, w] = self.piece.derivative_weights(self.lambda);
         V::combine3(self.piece.varyings, self.piece.input_weights(w))
+    }
+
+    /// `(ddx(), ddy())`, the same values, for about the price of one: the perspective divide's
+    /// terms are shared by both axes.
+    ///
+    /// ```
+    /// use std::sync::atomic::{AtomicUsize, Ordering};
+    ///
+    /// use barytex_raster::{Fragment, Framebuffer, PipelineState, Shader, TargetLimits, draw};
+    /// use glam::{Vec3, Vec4};
+    ///
+    /// /// A perspective triangle (w varies) whose fragments check both forms agree.
+    /// struct Both(AtomicUsize);
+    /// impl Shader for Both {
+    ///     type Vertex = Vec3;
+    ///     type Varying = f32;
+    ///     fn vertex(&self, v: &Vec3) -> (Vec4, f32) {
+    ///         (Vec4::new(v.x, v.y, 0.5, 1.0 + 0.25 * v.y), v.x * v.y)
+    ///     }
+    ///     fn fragment(&self, f: &Fragment<'_, f32>) -> Option<Vec4> {
+    ///         assert_eq!(f.derivatives(), (f.ddx(), f.ddy()));
+    ///         self.0.fetch_add(1, Ordering::Relaxed);
+    ///         Some(Vec4::ONE)
+    ///     }
+    /// }
+    /// let tri = [Vec3::new(-1.0, -1.0, 0.0), Vec3::new(3.0, -1.0, 0.0), Vec3::new(-1.0, 3.0, 0.0)];
+    /// let shader = Both(AtomicUsize::new(0));
+    /// let mut fb = Framebuffer::new(8, 8, Vec4::ZERO, &TargetLimits::default())?;
+    /// draw(&mut fb, &shader, &PipelineState::default(), &tri, &[0, 1, 2]);
+    /// assert!(shader.0.into_inner() > 0);
+    /// # Ok::<(), barytex_raster::RasterError>(())
+    /// ```
+    #[must_use]
+    #[inline]
+    pub fn derivatives(&self) -> (V, V) {
+        let [wx, wy] = self.piece.derivative_weights(self.lambda);
+        (
+            V::combine3(self.piece.varyings, self.piece.input_weights(wx)),
+            V::combine3(self.piece.varyings, self.piece.input_weights(wy)),
+        )
     }
 
     /// GPU-style x derivative: the difference with the other pixel of this pixel's 2×2 quad in

@@ -225,7 +225,7 @@ impl Shader for MaterialShader<'_> {
             || self.environment.is_some()
             || (m.lit && (self.primitive.normals.is_none() || self.frequency == Frequency::Flat));
         let (ddx, ddy) = if needs_derivatives {
-            (f.ddx(), f.ddy())
+            f.derivatives()
         } else {
             (Surface::default(), Surface::default())
         };

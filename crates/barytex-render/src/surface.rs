@@ -132,7 +132,9 @@ impl Interpolate for Surface {
         surface_from_parts!(self.reads, |f| Interpolate::lerp(f(&self), f(&o), t))
     }
 
-    #[inline]
+    // Always inlined: called out of line, the three 100-byte surfaces are copied into the
+    // call (a `memcpy` as costly as the interpolation itself), three times per fragment.
+    #[inline(always)]
     fn combine3(v: [Self; 3], w: [f32; 3]) -> Self {
         surface_from_parts!(v[0].reads, |f| Interpolate::combine3(
             [f(&v[0]), f(&v[1]), f(&v[2])],

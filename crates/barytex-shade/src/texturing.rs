@@ -105,7 +105,7 @@ impl<'a> SurfaceShader<'a> {
         let _ = p;
         let mut n = n.normalize_or_zero();
         if let (Some((height, scale)), Some((du_dx, du_dy))) = (self.bump, duv) {
-            let (dx, dy) = (f.ddx(), f.ddy());
+            let (dx, dy) = f.derivatives();
             // Central differences of the height over the pixel's footprint in uv.
             let h = |q: Vec2| height.height(q) * scale;
             let dhdx = h(uv + du_dx * 0.5) - h(uv - du_dx * 0.5);
@@ -135,7 +135,10 @@ impl Shader for SurfaceShader<'_> {
 
     fn fragment(&self, f: &Fragment<'_, SurfaceVarying>) -> Option<Vec4> {
         let needs_duv = self.colour.is_some() || self.normal_map.is_some() || self.bump.is_some();
-        let duv = needs_duv.then(|| (f.ddx().2, f.ddy().2));
+        let duv = needs_duv.then(|| {
+            let (dx, dy) = f.derivatives();
+            (dx.2, dy.2)
+        });
         let (p, _, uv, _) = f.varying;
         let n = self.normal(f, duv);
         let (du_dx, du_dy) = duv.unwrap_or_default();
@@ -159,7 +162,7 @@ impl Shader for SurfaceShader<'_> {
             let eye = self.scene.camera.eye;
             let r = reflection_direction(p, n, eye);
             // The reflected ray's change per pixel, from the varying's derivatives.
-            let (dx, dy) = (f.ddx(), f.ddy());
+            let (dx, dy) = f.derivatives();
             let rx = reflection_direction(p + dx.0, (n + dx.1).normalize_or_zero(), eye) - r;
             let ry = reflection_direction(p + dy.0, (n + dy.1).normalize_or_zero(), eye) - r;
             let e = env.sample(r, rx, ry).truncate();

@@ -79,6 +79,15 @@ pub trait Texel: Copy + Default + Send + Sync + core::fmt::Debug + 'static {
     #[must_use]
     fn from_linear(color: Vec4) -> Self;
 
+    /// Whether this texel's alpha is exactly 1: `to_linear().w == 1.0`, which formats without
+    /// alpha always give and 8-bit formats give for the byte 255. Samplers use it to skip
+    /// premultiplying textures whose every texel is opaque (multiplying by 1 changes nothing).
+    #[must_use]
+    #[inline]
+    fn is_opaque(self) -> bool {
+        self.to_linear().w == 1.0
+    }
+
     /// The stored values as numbers, **without** colour decoding: for sRGB formats the encoded
     /// values (byte / 255), for every other format the same as [`to_linear`](Self::to_linear).
     /// Filtering these is the "sRGB-naive" path GPUs and most resizers take (kept for comparison).
@@ -172,7 +181,9 @@ fn f32_to_unorm8(x: f32) -> u8 {
 impl Texel for Srgba8 {
     const FORMAT: TextureFormat = TextureFormat::Rgba8UnormSrgb;
 
-    #[inline]
+    // Always inlined: a trilinear lookup decodes eight texels, and a call each costs as much as
+    // the decode (seen in the renderer's fragment loop, where the compiler declined to inline).
+    #[inline(always)]
     fn to_linear(self) -> Vec4 {
         let [r, g, b, a] = self.0;
         Vec4::new(
@@ -181,6 +192,11 @@ impl Texel for Srgba8 {
             srgb::decode(b),
             unorm8_to_f32(a),
         )
+    }
+
+    #[inline]
+    fn is_opaque(self) -> bool {
+        self.0[3] == u8::MAX
     }
 
     #[inline]
@@ -215,7 +231,7 @@ impl Srgba8 {
 impl Texel for Rgba8 {
     const FORMAT: TextureFormat = TextureFormat::Rgba8Unorm;
 
-    #[inline]
+    #[inline(always)]
     fn to_linear(self) -> Vec4 {
         let [r, g, b, a] = self.0;
         Vec4::new(
@@ -224,6 +240,11 @@ impl Texel for Rgba8 {
             unorm8_to_f32(b),
             unorm8_to_f32(a),
         )
+    }
+
+    #[inline]
+    fn is_opaque(self) -> bool {
+        self.0[3] == u8::MAX
     }
 
     #[inline]
@@ -337,6 +358,22 @@ mod tests {
             round_trips(R8(b));
             round_trips(Rg8([b, 255 - b]));
         }
+    }
+
+    #[test]
+    fn is_opaque_is_alpha_exactly_one() {
+        for b in 0..=255_u8 {
+            for t in [Srgba8([7, 8, 9, b]), Srgba8([b; 4])] {
+                assert_eq!(t.is_opaque(), t.to_linear().w == 1.0, "{t:?}");
+            }
+            let t = Rgba8([9, 8, 7, b]);
+            assert_eq!(t.is_opaque(), t.to_linear().w == 1.0, "{t:?}");
+            assert!(R8(b).is_opaque() && Rg8([b, b]).is_opaque());
+        }
+        assert!(Rgba32f([f32::NAN, 0.0, 0.0, 1.0]).is_opaque());
+        assert!(!Rgba32f([0.0, 0.0, 0.0, f32::NAN]).is_opaque());
+        assert!(!Rgba16f([f16::ONE, f16::ONE, f16::ONE, f16::INFINITY]).is_opaque());
+        assert!(R32f(f32::INFINITY).is_opaque());
     }
 
     #[test]

@@ -99,7 +99,7 @@ proptest! {
 
     /// Power-of-two sides under repeat addressing take the trilinear path that masks indices
     /// (random sides above rarely are powers of two): far-away, huge and texel-aligned
-    /// coordinates included.
+    /// coordinates included, over translucent and over opaque textures.
     #[test]
     fn repeat_power_of_two_path_equals_the_general_path(
         log_w in 0_u32..7,
@@ -109,8 +109,15 @@ proptest! {
         scale in prop_oneof![Just(1.0_f32), Just(1e-3), Just(1e6), Just(1e30)],
         ddx in (-0.5_f32..0.5, -0.5_f32..0.5),
         ddy in (-0.5_f32..0.5, -0.5_f32..0.5),
+        opaque in any::<bool>(),
     ) {
-        let base = texture(1 << log_w, 1 << log_h, seed);
+        let mut base = texture(1 << log_w, 1 << log_h, seed);
+        if opaque {
+            // Every texel opaque: the path that does not premultiply.
+            for t in base.texels_mut() {
+                t.0[3] = 255;
+            }
+        }
         let chain = MipChain::generate(base, &MipOptions::default()).expect("small");
         let repeat = SamplerDescriptor::trilinear().with_address_mode(AddressMode::Repeat);
         let clamped = SamplerDescriptor { lod_min_clamp: 0.5, lod_max_clamp: 2.25, ..repeat };
@@ -131,6 +138,36 @@ proptest! {
                 );
             }
         }
+    }
+}
+
+/// Opaque float texels that are NaN or infinite: the path that skips premultiplying (by 1)
+/// still turns a non-finite colour into black, as the general path does.
+#[test]
+fn opaque_non_finite_float_texels_take_the_documented_values() {
+    use barytex_texture::Rgba32f;
+    let texels = [f32::NAN, f32::INFINITY, -f32::INFINITY, 0.25]
+        .into_iter()
+        .cycle()
+        .take(64)
+        .enumerate()
+        .map(|(i, x)| Rgba32f([x, i as f32 / 64.0, 0.5, 1.0]))
+        .collect();
+    let base = Texture2d::from_texels(8, 8, texels).expect("small");
+    let chain = MipChain::generate(base, &MipOptions::default()).expect("small");
+    let sampler = TextureSampler::new(
+        chain,
+        SamplerDescriptor::trilinear().with_address_mode(AddressMode::Repeat),
+    );
+    let (ddx, ddy) = (Vec2::new(0.2, 0.0), Vec2::new(0.0, 0.15));
+    for i in 0..200 {
+        let uv = Vec2::new(i as f32 * 0.013 - 1.0, i as f32 * 0.007);
+        let got = sampler.sample(uv, ddx, ddy);
+        assert!(!got.is_nan(), "{uv:?}: {got:?}");
+        assert_eq!(
+            bits(got),
+            bits(sampler.sample_level(uv, sampler.lod(ddx, ddy, 0.0)))
+        );
     }
 }
 

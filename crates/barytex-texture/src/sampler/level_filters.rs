@@ -46,9 +46,15 @@ pub(crate) fn bilinear<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing)
 /// `tests/lookup_paths.rs` compares the two).
 ///
 /// [`AddressMode::Repeat`]: crate::sampler::AddressMode::Repeat
+///
+/// `OPAQUE`: every texel of the level is opaque ([`Texel::is_opaque`]), so premultiplying
+/// (a product by exactly 1) is skipped; the same result, bit for bit.
 #[must_use]
 #[inline(always)]
-pub(crate) fn bilinear_repeat_pow2<T: Texel>(level: &Texture2d<T>, uv: Vec2) -> Vec4 {
+pub(crate) fn bilinear_repeat_pow2<T: Texel, const OPAQUE: bool>(
+    level: &Texture2d<T>,
+    uv: Vec2,
+) -> Vec4 {
     let (w, h) = level.size();
     let (tx, ty) = linear_taps_pair(uv, w, h);
     let (mx, my) = (i64::from(w) - 1, i64::from(h) - 1);
@@ -66,10 +72,17 @@ pub(crate) fn bilinear_repeat_pow2<T: Texel>(level: &Texture2d<T>, uv: Vec2) -> 
         &texels[y0 * stride..][..stride],
         &texels[y1 * stride..][..stride],
     );
-    let c00 = premultiply(row0[x0].to_linear());
-    let c10 = premultiply(row0[x1].to_linear());
-    let c01 = premultiply(row1[x0].to_linear());
-    let c11 = premultiply(row1[x1].to_linear());
+    let fetch = |t: T| {
+        if OPAQUE {
+            t.to_linear()
+        } else {
+            premultiply(t.to_linear())
+        }
+    };
+    let c00 = fetch(row0[x0]);
+    let c10 = fetch(row0[x1]);
+    let c01 = fetch(row1[x0]);
+    let c11 = fetch(row1[x1]);
     let top = c00 + (c10 - c00) * tx.frac;
     let bottom = c01 + (c11 - c01) * tx.frac;
     top + (bottom - top) * ty.frac
