@@ -10,9 +10,10 @@
 mod lanes {
     use glam::Vec4;
     use safe_arch::{
-        add_m128d, convert_to_m128_from_m128d, convert_to_m128d_from_lower2_m128,
-        get_f64_from_m128d_s, m128, m128d, move_high_low_m128, move_low_high_m128, mul_m128d,
-        set_reversed_m128d, set_splat_m128d, sub_m128d, unpack_high_m128d, unpack_low_m128d,
+        add_m128d, bitand_m128d, cmp_le_mask_m128d, convert_to_m128_from_m128d,
+        convert_to_m128d_from_lower2_m128, get_f64_from_m128d_s, m128, m128d, move_high_low_m128,
+        move_low_high_m128, move_mask_m128d, mul_m128d, set_reversed_m128d, set_splat_m128d,
+        sub_m128d, unpack_high_m128d, unpack_low_m128d,
     };
 
     /// Two f64 lanes, `lo` and `hi`.
@@ -47,6 +48,12 @@ mod lanes {
         #[inline(always)]
         pub(crate) fn mul(self, o: Self) -> Self {
             Self(mul_m128d(self.0, o.0))
+        }
+        /// Whether both lanes are within `bound` of 0 (false for NaN).
+        #[inline(always)]
+        pub(crate) fn both_within(self, bound: f64) -> bool {
+            let magnitude = bitand_m128d(self.0, set_splat_m128d(f64::from_bits(!0 >> 1)));
+            move_mask_m128d(cmp_le_mask_m128d(magnitude, set_splat_m128d(bound))) == 0b11
         }
         /// `(self.lo, o.lo)`.
         #[inline(always)]
@@ -114,6 +121,11 @@ mod lanes {
         #[inline(always)]
         pub(crate) fn mul(self, o: Self) -> Self {
             Self([self.0[0] * o.0[0], self.0[1] * o.0[1]])
+        }
+        /// Whether both lanes are within `bound` of 0 (false for NaN).
+        #[inline(always)]
+        pub(crate) fn both_within(self, bound: f64) -> bool {
+            self.0[0].abs() <= bound && self.0[1].abs() <= bound
         }
         /// `(self.lo, o.lo)`.
         #[inline(always)]

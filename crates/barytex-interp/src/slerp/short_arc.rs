@@ -24,7 +24,7 @@
 use glam::Vec4;
 
 use super::pair::F64x2;
-use super::unit_vector::{Ops, cosine_minus_one, is_near_unit};
+use super::unit_vector::{NEAR_UNIT, Ops, cosine_minus_one};
 
 /// `θ²` as a polynomial in `y = cos θ − 1`, `θ ∈ [0, π/2]` (`tools/fit_slerp_weight.py`, absolute
 /// error 7.7e-10).
@@ -69,9 +69,10 @@ const SINC: [f64; 5] = [
 ];
 
 /// The two weights `(sin((1 − t)θ)/sin θ, sin(tθ)/sin θ)` for `t ∈ [0, 1]` and
-/// `y = cos θ − 1 ∈ [−1, 0]`, in the lanes `(lo, hi)`.
+/// `y = cos θ − 1 ∈ [−1, 0]`, in the lanes `(lo, hi)`, each multiplied by its lane of `scale`
+/// (alongside the polynomials, off their critical path).
 #[inline(always)]
-fn weights(t: f64, y: f64) -> F64x2 {
+fn weights(t: f64, y: f64, scale: F64x2) -> F64x2 {
     // θ² and θ/sin θ side by side, one lane each, by Estrin's scheme: depth 4 instead of
     // Horner's 10, as the weights are on the critical path of a SLERP, after the dot product.
     let c = |i: usize| F64x2::new(THETA2[i], THETA_OVER_SIN[i]);
@@ -96,7 +97,7 @@ fn weights(t: f64, y: f64) -> F64x2 {
     let k = |i: usize| F64x2::splat(SINC[i]);
     let low = k(0).add(k(1).mul(z));
     let high = k(2).add(k(3).mul(z)).add(k(4).mul(z2));
-    low.add(z2.mul(high)).mul(s.mul(theta_over_sin))
+    low.add(z2.mul(high)).mul(s.mul(theta_over_sin).mul(scale))
 }
 
 /// SLERP of the directions `a·ra` and `b·rb` (`ra`, `rb` the inverse lengths of `a`, `b`;
@@ -110,7 +111,7 @@ pub(crate) fn slerp_short_arc<W: Ops<Scalar = f64>>(
     (ra, rb): (f64, f64),
     t: f64,
 ) -> W {
-    let w = weights(t, y).mul(F64x2::new(ra, rb));
+    let w = weights(t, y, F64x2::new(ra, rb));
     a.scale(w.lo()).add(b.scale(w.hi()))
 }
 
@@ -132,16 +133,19 @@ pub(crate) fn slerp_quat_short_arc(a: Vec4, b: Vec4, t: f32) -> Option<Vec4> {
     let ab = a01.mul(b01).add(a23.mul(b23));
     // (a·a, b·b) in one register.
     let lengths = aa.los(bb).add(aa.his(bb));
-    let (aa, bb, ab) = (lengths.lo(), lengths.hi(), ab.lo() + ab.hi());
-    if !(is_near_unit(aa, bb) && ab >= 0.0) {
+    let d = lengths.sub(F64x2::splat(1.0));
+    let ab = ab.lo() + ab.hi();
+    // `is_near_unit`, both lanes at once.
+    if !(d.both_within(NEAR_UNIT) && ab >= 0.0) {
         return None;
     }
     // `inverse_length_near` of both lengths at once.
-    let d = lengths.sub(F64x2::splat(1.0));
     let inverse_lengths =
         F64x2::splat(1.0).sub(d.mul(F64x2::splat(0.5).sub(F64x2::splat(0.375).mul(d))));
-    let y = cosine_minus_one(ab, aa, bb);
-    let w = weights(f64::from(t), y).mul(inverse_lengths);
+    // `â·b̂ − 1` by the series in the lengths (not `ab·ra·rb − 1`, four instructions fewer but
+    // two multiplies longer on the critical path: measured slower).
+    let y = cosine_minus_one(ab, lengths.lo(), lengths.hi());
+    let w = weights(f64::from(t), y, inverse_lengths);
     let (wa, wb) = (F64x2::splat(w.lo()), F64x2::splat(w.hi()));
     Some(F64x2::narrow(
         a01.mul(wa).add(b01.mul(wb)),
