@@ -517,15 +517,21 @@ vector_slerp!(DVec2, f64, try_slerp_f64);
 vector_slerp!(DVec3, f64, try_slerp_f64);
 vector_slerp!(DVec4, f64, try_slerp_f64);
 
-/// `entry(a, b, t)`, out of line: a quaternion SLERP outside [`slerp_quat_short_arc`]'s common
-/// case. Kept out of the caller so that the common case, small, can be inlined into a loop.
+/// The f32 quaternion entry: the common case ([`slerp_quat_short_arc`]) inline, everything else
+/// ([`try_slerp_f32`]) out of line, so that the common case, small, can be inlined into a loop.
+#[inline]
+fn try_slerp_quat(a: Vec4, b: Vec4, t: f32) -> Option<Vec4> {
+    slerp_quat_short_arc(a, b, t).or_else(|| try_slerp_quat_general(a, b, t))
+}
+
+/// [`try_slerp_quat`] outside the common case.
 #[inline(never)]
-fn outside_the_common_case<V, S>(entry: fn(V, V, S) -> Option<V>, a: V, b: V, t: S) -> Option<V> {
-    entry(a, b, t)
+fn try_slerp_quat_general(a: Vec4, b: Vec4, t: f32) -> Option<Vec4> {
+    try_slerp_f32(a, b, t, Vec4::as_dvec4, |w: DVec4| w.as_vec4())
 }
 
 macro_rules! quat_slerp {
-    ($q:ty, $v:ty, $s:ty, $fast:expr, $entry:expr) => {
+    ($q:ty, $v:ty, $s:ty, $entry:expr) => {
         impl sealed::Sealed for $q {}
 
         impl Slerp for $q {
@@ -546,22 +552,16 @@ macro_rules! quat_slerp {
         impl SlerpAlong for $q {
             #[inline]
             fn checked_along(a: Self, b: Self, t: $s, path: QuatPath, _: Token) -> Option<Self> {
-                let fast: fn($v, $v, $s) -> Option<$v> = $fast;
                 let entry: fn($v, $v, $s) -> Option<$v> = $entry;
                 let (a, mut b) = (<$v>::from(a), <$v>::from(b));
                 if path == QuatPath::Shortest && a.dot(b) < 0.0 {
                     b = -b;
                 }
-                if let Some(r) = fast(a, b, t) {
-                    return Some(<$q>::from_vec4(r));
-                }
-                outside_the_common_case(entry, a, b, t).map(<$q>::from_vec4)
+                entry(a, b, t).map(<$q>::from_vec4)
             }
         }
     };
 }
 
-quat_slerp!(Quat, Vec4, f32, slerp_quat_short_arc, |a, b, t| {
-    try_slerp_f32(a, b, t, Vec4::as_dvec4, |w: DVec4| w.as_vec4())
-});
-quat_slerp!(DQuat, DVec4, f64, |_, _, _| None, try_slerp_f64);
+quat_slerp!(Quat, Vec4, f32, try_slerp_quat);
+quat_slerp!(DQuat, DVec4, f64, try_slerp_f64);
