@@ -11,11 +11,14 @@ The identity is exact: sin(s*theta)/sin(theta) = s * sinc(s*theta) / sinc(theta)
 Weighted least squares at Chebyshev nodes (A absolute, B and S relative), then the largest
 error of each on a dense grid and of the whole weight over (s, y) in [0, 1] x [-1, 0], next to
 that of Eberly's 16-factor series with its balanced last factor (tools/fit_eberly_mu.py), which
-this replaces. Run: python3 tools/fit_slerp_weight.py"""
+this replaces. Run: python3 tools/fit_slerp_weight.py [DEG_A DEG_B DEG_S] (default 10 10 4, the
+degrees in use; A and B share one two-lane evaluation, so they cost the larger degree. Whole
+weight error of other choices: 9 9 4: 1.9e-8, 8 9 4: 1.8e-8, 8 8 4: 8.5e-8, 9 10 5: 2.4e-9)."""
+import sys
+
 import numpy as np
 
-import sys
-DEG_A, DEG_B, DEG_S = (int(a) for a in sys.argv[1:4]) if len(sys.argv) > 3 else (9, 10, 4)
+DEG_A, DEG_B, DEG_S = (int(a) for a in sys.argv[1:4]) if len(sys.argv) > 3 else (10, 10, 4)
 
 
 def chebyshev_nodes(lo, hi, n=4000):
