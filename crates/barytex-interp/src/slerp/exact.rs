@@ -13,7 +13,7 @@
 
 use glam::{DQuat, DVec2, DVec3, DVec4, Quat, Vec2, Vec3, Vec3A, Vec4};
 
-use super::short_arc::slerp_short_arc;
+use super::short_arc::{slerp_quat_short_arc, slerp_short_arc};
 use super::trig::{Libm, Poly, Trig, select};
 use super::unit_vector::{
     Ops, Wide, cosine_minus_one, inverse_length, inverse_length_far, inverse_length_near,
@@ -196,7 +196,7 @@ fn slerp_far_from_unit<W: Wide>(a: W, b: W, (aa, bb): (f64, f64), t: f64) -> W {
 
 /// SLERP of the directions of `a` and `b` (f64 copies of nonzero finite f32 vectors of any
 /// length; `ab = a·b`, `ra`, `rb` their inverse lengths and `y = â·b̂ − 1`) at any finite `t` — arcs up to 90° with
-/// `t ∈ (0, 1)` by the series of [`slerp_short_arc`], others with the polynomial trigonometry.
+/// `t ∈ (0, 1)` by the polynomials of [`slerp_short_arc`], others with the polynomial trigonometry.
 ///
 /// The long arcs take the perpendicular part of `b` from the exact minors of `a` and `b`
 /// ([`Wide::rejection`]), not from normalized copies: for nearly opposite inputs the plane of the
@@ -207,9 +207,9 @@ fn slerp_far_from_unit<W: Wide>(a: W, b: W, (aa, bb): (f64, f64), t: f64) -> W {
 #[inline]
 fn slerp_directions<W: Wide>(a: W, b: W, ab: f64, (ra, rb): (f64, f64), y: f64, t: f64) -> W {
     if t > 0.0 && t < 1.0 && ab >= 0.0 {
-        // At most 90° apart: `y = â·b̂ − 1` to a few f64 ulps is all the series needs (an error δ
-        // in it moves the result by about δ, at every angle — hence the division by the lengths,
-        // which an input 2ε off unit length would otherwise turn into a 2.4e-7 error).
+        // At most 90° apart: `y = â·b̂ − 1` to a few f64 ulps is all the polynomials need (an
+        // error δ in it moves the result by about δ, at every angle — hence the division by the
+        // lengths, which an input 2ε off unit length would otherwise turn into a 2.4e-7 error).
         return slerp_short_arc(a, b, y, (ra, rb), t);
     }
     let a_hat = a.scale(ra);
@@ -301,8 +301,9 @@ pub trait SlerpAlong: Slerp {
 /// perpendicular to `a` and `θ = atan2(|p|, a·b)`, accurate at every angle, so nearly opposite
 /// vectors stay on the unit sphere (glam's `Vec3::slerp` loses up to 18 % of the length within
 /// 0.06° of opposite), and there is no `acos` near 1 and no threshold switching to nlerp. The f32
-/// types compute in f64; arcs up to 90° with `t ∈ [0, 1]` use Eberly's series with 16 balanced
-/// factors, whose error is below the f32 rounding of the result.
+/// types compute in f64; arcs up to 90° with `t ∈ [0, 1]` write each weight `sin(sθ)/sin θ` as
+/// `s·sinc(sθ)/sinc(θ)` with three short polynomials (in `cos θ − 1` and `(sθ)²`), whose error
+/// (8e-9) is below the f32 rounding of the result.
 ///
 /// # Unit inputs
 /// An input is *unit* when its squared length, computed in f64 from its components, is within
@@ -516,6 +517,19 @@ vector_slerp!(DVec2, f64, try_slerp_f64);
 vector_slerp!(DVec3, f64, try_slerp_f64);
 vector_slerp!(DVec4, f64, try_slerp_f64);
 
+/// The f32 quaternion entry: the common case ([`slerp_quat_short_arc`]) inline, everything else
+/// ([`try_slerp_f32`]) out of line, so that the common case, small, can be inlined into a loop.
+#[inline]
+fn try_slerp_quat(a: Vec4, b: Vec4, t: f32) -> Option<Vec4> {
+    slerp_quat_short_arc(a, b, t).or_else(|| try_slerp_quat_general(a, b, t))
+}
+
+/// [`try_slerp_quat`] outside the common case.
+#[inline(never)]
+fn try_slerp_quat_general(a: Vec4, b: Vec4, t: f32) -> Option<Vec4> {
+    try_slerp_f32(a, b, t, Vec4::as_dvec4, |w: DVec4| w.as_vec4())
+}
+
 macro_rules! quat_slerp {
     ($q:ty, $v:ty, $s:ty, $entry:expr) => {
         impl sealed::Sealed for $q {}
@@ -549,11 +563,5 @@ macro_rules! quat_slerp {
     };
 }
 
-quat_slerp!(Quat, Vec4, f32, |a, b, t| try_slerp_f32(
-    a,
-    b,
-    t,
-    Vec4::as_dvec4,
-    |w: DVec4| w.as_vec4()
-));
+quat_slerp!(Quat, Vec4, f32, try_slerp_quat);
 quat_slerp!(DQuat, DVec4, f64, try_slerp_f64);

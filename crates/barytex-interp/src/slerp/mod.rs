@@ -14,6 +14,7 @@ mod method;
 mod nlerp;
 mod nlerp_batch;
 mod normals;
+mod pair;
 mod short_arc;
 mod trig;
 mod unit_vector;

@@ -1,58 +1,105 @@
 //! The f32 SLERP's fast path: arcs of at most 90° with `t` in `[0, 1]` (every short-path
-//! quaternion interpolation, and vectors less than a right angle apart), by Eberly's series with
-//! 16 factors in f64, evaluated for latency rather than with Horner's serial chain.
+//! quaternion interpolation, and vectors less than a right angle apart), by three short
+//! polynomials in f64 — no division, square root or transcendental call.
 //!
-//! With `x = a·b = cos θ ≥ 0` and `y = x − 1`, SLERP is `f(1 − t)·a + f(t)·b` where
-//! `f(s) = s·(1 + h₁ + h₁h₂ + … + h₁⋯h₁₆)`, `hᵢ = (uᵢ s² − vᵢ)·y` (see [`super::eberly`]). The
-//! 16 factors fall into 4 blocks of 4; each block's partial prefix sum and product take two
-//! multiplies in depth, and the blocks combine by a 3-step Horner scheme — about 60 cycles of
-//! dependency instead of Horner's ~110, and no division, square root or transcendental call.
-//! With the error-balanced last factor the coefficient error is 3.1e-8 (`tools/fit_eberly_mu.py`,
-//! n = 16), below the f32 rounding of the result, so the path meets the exact SLERP's bounds; the
-//! tests measure it together with the trigonometric path.
+//! With `x = a·b = cos θ ≥ 0` and `y = x − 1 ∈ [−1, 0]`, SLERP is `f(1 − t)·a + f(t)·b` where
+//! `f(s) = sin(sθ)/sin θ`, and exactly
+//!
+//! `f(s) = s · sinc(sθ) / sinc(θ)`, `sinc(x) = sin(x)/x`.
+//!
+//! `θ²` and `θ/sin θ` are analytic functions of `y` on `[−1, 0]` (their nearest singularity is
+//! `y = −2`, θ = π), so each is a polynomial in `y` of degree 10 to a few 1e-9; `sinc(sθ)` is a
+//! polynomial of degree 4 in `z = s²θ²` (an entire even series). `θ²` and `θ/sin θ` share `y` and
+//! run side by side in the two lanes of one register, and so do the two weights' `sinc`: about
+//! 45 two-lane operations for both weights, by Estrin's scheme (the weights are on the critical
+//! path of a call). This replaced Eberly's 16-factor series (Eberly, "A Fast and Accurate
+//! Algorithm for Computing SLERP", JGT 2011; [`super::eberly`]): about 100 multiplies and as many
+//! additions for the same two weights, with 3.1e-8 error.
+//!
+//! The coefficients are least-squares fits at Chebyshev nodes (`tools/fit_slerp_weight.py`,
+//! which prints them), the constant terms fixed so that the weights are exactly `1 − t` and `t`
+//! at θ = 0. The whole weight errs by at most 8.0e-9 over `(s, y) ∈ [0, 1] × [−1, 0]` (the
+//! script's dense grid), below the f32 rounding of the result, so the path meets the exact
+//! SLERP's bounds; the tests measure it together with the trigonometric path.
 
-use super::unit_vector::Ops;
+use glam::Vec4;
 
-/// Eberly's `(uᵢ, vᵢ)`, `i = 1 ..= 16`, the last pair scaled by `1 + μ₁₆`.
-const UV: [(f64, f64); 16] = coefficients();
+use super::pair::F64x2;
+use super::unit_vector::{NEAR_UNIT, Ops, cosine_minus_one};
 
-const fn coefficients() -> [(f64, f64); 16] {
-    const ONE_PLUS_MU_16: f64 = 1.916_667_572_156_612;
-    let mut table = [(0.0, 0.0); 16];
-    let mut i = 1;
-    while i <= 16 {
-        let denominator = (2 * i + 1) as f64;
-        let mut u = 1.0 / (i as f64 * denominator);
-        let mut v = i as f64 / denominator;
-        if i == 16 {
-            u *= ONE_PLUS_MU_16;
-            v *= ONE_PLUS_MU_16;
-        }
-        table[i - 1] = (u, v);
-        i += 1;
-    }
-    table
-}
+/// `θ²` as a polynomial in `y = cos θ − 1`, `θ ∈ [0, π/2]` (`tools/fit_slerp_weight.py`, absolute
+/// error 7.7e-10).
+const THETA2: [f64; 11] = [
+    0.0,
+    -1.9999999105653241,
+    0.3333375031721363,
+    -0.08882157100485966,
+    0.029106811941336422,
+    -0.007734641077574496,
+    0.01053882351626329,
+    0.010014272737815992,
+    0.012870776185484812,
+    0.00719978930862897,
+    0.0022051240854918984,
+];
 
-/// `sin(sθ)/sin θ` for `s ∈ [0, 1]` and `y = cos θ − 1 ∈ [−1, 0]`.
-#[inline]
-fn weight(s: f64, y: f64) -> f64 {
-    let s2 = s * s;
-    let h: [f64; 16] = core::array::from_fn(|i| (UV[i].0 * s2 - UV[i].1) * y);
-    // Per block of four: S = h₁ + h₁h₂ + h₁h₂h₃ + h₁h₂h₃h₄ and Q = h₁h₂h₃h₄.
-    let block = |k: usize| {
-        let [h1, h2, h3, h4] = [h[4 * k], h[4 * k + 1], h[4 * k + 2], h[4 * k + 3]];
-        let p2 = h1 * h2;
-        let p3 = p2 * h3;
-        let p4 = p2 * (h3 * h4);
-        ((h1 + p2) + (p3 + p4), p4)
-    };
-    let (s0, q0) = block(0);
-    let (s1, q1) = block(1);
-    let (s2b, q2) = block(2);
-    let (s3, _) = block(3);
-    let tail = s1 + q1 * (s2b + q2 * s3);
-    s * ((1.0 + s0) + q0 * tail)
+/// `θ/sin θ` as a polynomial in `y = cos θ − 1`, `θ ∈ [0, π/2]` (`tools/fit_slerp_weight.py`,
+/// relative error 2.3e-9).
+const THETA_OVER_SIN: [f64; 11] = [
+    1.0,
+    -0.3333330686599538,
+    0.1333460072151863,
+    -0.056933599955866006,
+    0.027092762303164767,
+    -0.0037440557729563513,
+    0.027130346392452938,
+    0.03546486579316968,
+    0.041702323598020556,
+    0.02414507846918408,
+    0.0071241035931409735,
+];
+
+/// `sin(r)/r` as a polynomial in `z = r²`, `r ∈ [0, π/2]` (`tools/fit_slerp_weight.py`, relative
+/// error 6.3e-9).
+const SINC: [f64; 5] = [
+    1.0,
+    -0.16666659352132845,
+    0.008333062203729022,
+    -0.00019809352237702268,
+    2.605294329885933e-06,
+];
+
+/// The two weights `(sin((1 − t)θ)/sin θ, sin(tθ)/sin θ)` for `t ∈ [0, 1]` and
+/// `y = cos θ − 1 ∈ [−1, 0]`, in the lanes `(lo, hi)`, each multiplied by its lane of `scale`
+/// (alongside the polynomials, off their critical path).
+#[inline(always)]
+fn weights(t: f64, y: f64, scale: F64x2) -> F64x2 {
+    // θ² and θ/sin θ side by side, one lane each, by Estrin's scheme: depth 4 instead of
+    // Horner's 10 (with Horner a call measured 20 % slower: the weights are on the critical path
+    // of a SLERP, after the dot product).
+    let c = |i: usize| F64x2::new(THETA2[i], THETA_OVER_SIN[i]);
+    let y1 = F64x2::splat(y);
+    let y2 = y1.mul(y1);
+    let y4 = y2.mul(y2);
+    let y8 = y4.mul(y4);
+    let p01 = c(0).add(c(1).mul(y1));
+    let p23 = c(2).add(c(3).mul(y1));
+    let p45 = c(4).add(c(5).mul(y1));
+    let p67 = c(6).add(c(7).mul(y1));
+    let p89 = c(8).add(c(9).mul(y1));
+    let p03 = p01.add(p23.mul(y2));
+    let p47 = p45.add(p67.mul(y2));
+    let p8a = p89.add(c(10).mul(y2));
+    let p = p03.add(p47.mul(y4)).add(p8a.mul(y8));
+    let (theta2, theta_over_sin) = (F64x2::splat(p.lo()), F64x2::splat(p.hi()));
+    // sinc(sθ) for both weights, one lane each, by Estrin's scheme; `s·θ/sin θ` alongside.
+    let s = F64x2::new(1.0 - t, t);
+    let z = s.mul(s).mul(theta2);
+    let z2 = z.mul(z);
+    let k = |i: usize| F64x2::splat(SINC[i]);
+    let low = k(0).add(k(1).mul(z));
+    let high = k(2).add(k(3).mul(z)).add(k(4).mul(z2));
+    low.add(z2.mul(high)).mul(s.mul(theta_over_sin).mul(scale))
 }
 
 /// SLERP of the directions `a·ra` and `b·rb` (`ra`, `rb` the inverse lengths of `a`, `b`;
@@ -66,6 +113,44 @@ pub(crate) fn slerp_short_arc<W: Ops<Scalar = f64>>(
     (ra, rb): (f64, f64),
     t: f64,
 ) -> W {
-    a.scale(weight(1.0 - t, y) * ra)
-        .add(b.scale(weight(t, y) * rb))
+    let w = weights(t, y, F64x2::new(ra, rb));
+    a.scale(w.lo()).add(b.scale(w.hi()))
+}
+
+/// The f32 quaternion SLERP's common case, or `None` outside it: `t` strictly inside `(0, 1)`,
+/// `a ≠ b`, both within 2⁻²⁰ of unit squared length (so finite and nonzero), and `a·b ≥ 0` (the
+/// short path, after its sign flip). It is the arithmetic of the general f32 path
+/// (`try_slerp_f32` → `slerp_directions` → [`slerp_short_arc`]) with the checks reordered so
+/// that one test decides the common case, and the 4-vectors kept as two two-lane halves: the dot
+/// products are summed as `(x² + z²) + (y² + w²)` rather than left to right, which moves `y` and
+/// the inverse lengths by an f64 rounding at most.
+#[inline(always)]
+pub(crate) fn slerp_quat_short_arc(a: Vec4, b: Vec4, t: f32) -> Option<Vec4> {
+    if !(t > 0.0 && t < 1.0) || a == b {
+        return None;
+    }
+    let ((a01, a23), (b01, b23)) = (F64x2::widen(a), F64x2::widen(b));
+    let aa = a01.mul(a01).add(a23.mul(a23));
+    let bb = b01.mul(b01).add(b23.mul(b23));
+    let ab = a01.mul(b01).add(a23.mul(b23));
+    // (a·a, b·b) in one register.
+    let lengths = aa.los(bb).add(aa.his(bb));
+    let d = lengths.sub(F64x2::splat(1.0));
+    let ab = ab.lo() + ab.hi();
+    // `is_near_unit`, both lanes at once.
+    if !(d.both_within(NEAR_UNIT) && ab >= 0.0) {
+        return None;
+    }
+    // `inverse_length_near` of both lengths at once.
+    let inverse_lengths =
+        F64x2::splat(1.0).sub(d.mul(F64x2::splat(0.5).sub(F64x2::splat(0.375).mul(d))));
+    // `â·b̂ − 1` by the series in the lengths (not `ab·ra·rb − 1`, four instructions fewer but
+    // two multiplies longer on the critical path: measured slower).
+    let y = cosine_minus_one(ab, lengths.lo(), lengths.hi());
+    let w = weights(f64::from(t), y, inverse_lengths);
+    let (wa, wb) = (F64x2::splat(w.lo()), F64x2::splat(w.hi()));
+    Some(F64x2::narrow(
+        a01.mul(wa).add(b01.mul(wb)),
+        a23.mul(wa).add(b23.mul(wb)),
+    ))
 }

@@ -203,7 +203,7 @@ pub(crate) fn is_near_unit(aa: f64, bb: f64) -> bool {
 }
 
 /// `|len² − 1|` up to which [`inverse_length`] uses its series (`2⁻²⁰`).
-const NEAR_UNIT: f64 = 1.0 / 1_048_576.0;
+pub(crate) const NEAR_UNIT: f64 = 1.0 / 1_048_576.0;
 
 /// `v` scaled to unit length, or `None` when `v` is zero or not finite.
 ///
