@@ -214,6 +214,45 @@ impl<V: Interpolate> Fragment<'_, V> {
         )
     }
 
+    /// [`derivatives`](Self::derivatives) of one part of the varying, `part(varying)`: the same
+    /// values as that part of `derivatives()` when the varying interpolates its parts
+    /// independently (as structs of vectors do), without interpolating the rest.
+    ///
+    /// ```
+    /// use barytex_raster::{Fragment, Framebuffer, PipelineState, Shader, TargetLimits, draw};
+    /// use glam::{Vec2, Vec3, Vec4};
+    ///
+    /// /// Checks the uv part's derivatives against those of the whole (uv, depth) varying.
+    /// struct Part;
+    /// impl Shader for Part {
+    ///     type Vertex = Vec3;
+    ///     type Varying = (Vec2, f32);
+    ///     fn vertex(&self, v: &Vec3) -> (Vec4, (Vec2, f32)) {
+    ///         (Vec4::new(v.x, v.y, 0.5, 1.0 + 0.25 * v.y), (Vec2::new(v.x, v.y * v.y), v.z))
+    ///     }
+    ///     fn fragment(&self, f: &Fragment<'_, (Vec2, f32)>) -> Option<Vec4> {
+    ///         let (dx, dy) = f.derivatives();
+    ///         assert_eq!(f.derivatives_of(|v| v.0), (dx.0, dy.0));
+    ///         Some(Vec4::ONE)
+    ///     }
+    /// }
+    /// let tri = [Vec3::new(-1.0, -1.0, 0.0), Vec3::new(3.0, -1.0, 0.0), Vec3::new(-1.0, 3.0, 0.0)];
+    /// let mut fb = Framebuffer::new(8, 8, Vec4::ZERO, &TargetLimits::default())?;
+    /// draw(&mut fb, &Part, &PipelineState::default(), &tri, &[0, 1, 2]);
+    /// # Ok::<(), barytex_raster::RasterError>(())
+    /// ```
+    #[must_use]
+    #[inline]
+    pub fn derivatives_of<T: Interpolate>(&self, part: impl Fn(&V) -> T) -> (T, T) {
+        let [wx, wy] = self.piece.derivative_weights(self.lambda);
+        let v = &self.piece.varyings;
+        let parts = [part(&v[0]), part(&v[1]), part(&v[2])];
+        (
+            T::combine3(parts, self.piece.input_weights(wx)),
+            T::combine3(parts, self.piece.input_weights(wy)),
+        )
+    }
+
     /// GPU-style x derivative: the difference with the other pixel of this pixel's 2×2 quad in
     /// the same row (its varying extrapolated from the triangle, as a helper invocation would
     /// compute it), `right − left`. Less accurate than [`ddx`](Self::ddx): it is the derivative

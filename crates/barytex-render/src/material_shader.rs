@@ -148,6 +148,49 @@ impl MaterialShader<'_> {
             .with_tex_coords([set(s.uv0, ddx.uv0, ddy.uv0), set(s.uv1, ddx.uv1, ddy.uv1)])
     }
 
+    /// [`fragment`](Shader::fragment) for glTF's unlit model without fog: base colour factor ×
+    /// texture × vertex colour, and the alpha mode. The same values as the general path, which
+    /// builds the whole surface point and both sets' derivatives; this reads only the base
+    /// texture's set and its derivatives (the unlit frame's fragment loop, issue 19).
+    #[inline]
+    fn unlit(&self, f: &Fragment<'_, Surface>) -> Option<Vec4> {
+        let m = &self.material;
+        let s = &f.varying;
+        let mut base = m.base_color * s.color;
+        if let Some(slot) = m.base_texture
+            && let Some(texture) = self.textures.get(slot.texture)
+        {
+            // Sets other than 0 and 1 do not exist: the general path's mapping gives `None`.
+            let set: Option<fn(&Surface) -> Vec2> = match slot.mapping.set {
+                0 => Some(|v| v.uv0),
+                1 => Some(|v| v.uv1),
+                _ => None,
+            };
+            if let Some(set) = set {
+                let (duvdx, duvdy) = f.derivatives_of(set);
+                let sample = UvSample {
+                    uv: set(s),
+                    duvdx,
+                    duvdy,
+                };
+                if let Some(mapped) = slot.mapping.transform_sample(&sample) {
+                    base *= texture.sample_uv(&mapped);
+                }
+            }
+        }
+        let alpha = match m.alpha_mode {
+            AlphaMode::Opaque => 1.0,
+            AlphaMode::Mask { cutoff } => {
+                if base.w < cutoff {
+                    return None;
+                }
+                1.0
+            }
+            AlphaMode::Blend => base.w,
+        };
+        Some(base.truncate().extend(alpha))
+    }
+
     /// The slot's texture through its uv mapping (the vertex set and `KHR_texture_transform`);
     /// `None` when the material has no such texture or the mapping is undefined at the pixel.
     fn sample(&self, slot: Option<Slot>, point: &SurfacePoint) -> Option<Vec4> {
@@ -215,6 +258,9 @@ impl Shader for MaterialShader<'_> {
     }
 
     fn fragment(&self, f: &Fragment<'_, Surface>) -> Option<Vec4> {
+        if !self.material.lit && self.fog.is_none() {
+            return self.unlit(f);
+        }
         let s = f.varying;
         let m = &self.material;
         let needs_derivatives = m.base_texture.is_some()
