@@ -88,6 +88,14 @@ pub trait Texel: Copy + Default + Send + Sync + core::fmt::Debug + 'static {
         self.to_linear().w == 1.0
     }
 
+    /// [`to_linear`](Self::to_linear) of a texel known to be opaque ([`is_opaque`](Self::is_opaque)):
+    /// the same value, which 8-bit formats compute without reading the alpha byte.
+    #[must_use]
+    #[inline]
+    fn to_linear_opaque(self) -> Vec4 {
+        self.to_linear()
+    }
+
     /// The stored values as numbers, **without** colour decoding: for sRGB formats the encoded
     /// values (byte / 255), for every other format the same as [`to_linear`](Self::to_linear).
     /// Filtering these is the "sRGB-naive" path GPUs and most resizers take (kept for comparison).
@@ -199,6 +207,13 @@ impl Texel for Srgba8 {
         self.0[3] == u8::MAX
     }
 
+    #[inline(always)]
+    fn to_linear_opaque(self) -> Vec4 {
+        let [r, g, b, _] = self.0;
+        // unorm8_to_f32(255) is exactly 1.
+        Vec4::new(srgb::decode(r), srgb::decode(g), srgb::decode(b), 1.0)
+    }
+
     #[inline]
     fn from_linear(c: Vec4) -> Self {
         Self([
@@ -245,6 +260,12 @@ impl Texel for Rgba8 {
     #[inline]
     fn is_opaque(self) -> bool {
         self.0[3] == u8::MAX
+    }
+
+    #[inline(always)]
+    fn to_linear_opaque(self) -> Vec4 {
+        let [r, g, b, _] = self.0;
+        Vec4::new(unorm8_to_f32(r), unorm8_to_f32(g), unorm8_to_f32(b), 1.0)
     }
 
     #[inline]
@@ -374,6 +395,16 @@ mod tests {
         assert!(!Rgba32f([0.0, 0.0, 0.0, f32::NAN]).is_opaque());
         assert!(!Rgba16f([f16::ONE, f16::ONE, f16::ONE, f16::INFINITY]).is_opaque());
         assert!(R32f(f32::INFINITY).is_opaque());
+        // The opaque decode is the decode, bit for bit.
+        for b in 0..=255_u8 {
+            let bits = |c: Vec4| c.to_array().map(f32::to_bits);
+            let (s, r) = (
+                Srgba8([b, 255 - b, b / 2, 255]),
+                Rgba8([b, 255 - b, b / 2, 255]),
+            );
+            assert_eq!(bits(s.to_linear_opaque()), bits(s.to_linear()));
+            assert_eq!(bits(r.to_linear_opaque()), bits(r.to_linear()));
+        }
     }
 
     #[test]

@@ -74,7 +74,7 @@ pub(crate) fn bilinear_repeat_pow2<T: Texel, const OPAQUE: bool>(
     );
     let fetch = |t: T| {
         if OPAQUE {
-            t.to_linear()
+            t.to_linear_opaque()
         } else {
             premultiply(t.to_linear())
         }
