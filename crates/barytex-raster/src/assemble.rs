@@ -44,7 +44,8 @@ pub(crate) fn assemble<V: Copy>(
         // Most triangles need no clipping: they skip the clipper's 9-vertex buffers.
         let unclipped: [ClipVertex; 3];
         let mut clipped_polygon: [ClipVertex; MAX_CLIPPED];
-        let polygon: &[ClipVertex] = if inside(&positions) {
+        let whole = inside(&positions);
+        let polygon: &[ClipVertex] = if whole {
             unclipped = [
                 ClipVertex {
                     position: positions[0],
@@ -125,7 +126,7 @@ pub(crate) fn assemble<V: Copy>(
                     varyings,
                     grads: [g0, g1, g2],
                     inv_w: [s[0].2, s[1].2, s[2].2],
-                    bary: (bary != [Vec3::X, Vec3::Y, Vec3::Z]).then_some(bary),
+                    bary: (!whole && bary != [Vec3::X, Vec3::Y, Vec3::Z]).then_some(bary),
                     interpolation: state.interpolation,
                 },
             });
