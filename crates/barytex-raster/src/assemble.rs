@@ -41,34 +41,47 @@ pub(crate) fn assemble<V: Copy>(
             stats.dropped_non_finite += 1;
             continue;
         }
-        let mut polygon = [ClipVertex::default(); MAX_CLIPPED];
-        let len = if inside(&positions) {
-            for (slot, (&position, bary)) in
-                polygon
-                    .iter_mut()
-                    .zip(positions.iter().zip([Vec3::X, Vec3::Y, Vec3::Z]))
-            {
-                *slot = ClipVertex { position, bary };
-            }
-            3
+        // Most triangles need no clipping: they skip the clipper's 9-vertex buffers.
+        let unclipped: [ClipVertex; 3];
+        let mut clipped_polygon: [ClipVertex; MAX_CLIPPED];
+        let whole = inside(&positions);
+        let polygon: &[ClipVertex] = if whole {
+            unclipped = [
+                ClipVertex {
+                    position: positions[0],
+                    bary: Vec3::X,
+                },
+                ClipVertex {
+                    position: positions[1],
+                    bary: Vec3::Y,
+                },
+                ClipVertex {
+                    position: positions[2],
+                    bary: Vec3::Z,
+                },
+            ];
+            &unclipped
         } else {
             stats.clipped += 1;
-            clip(&positions, &mut polygon)
+            clipped_polygon = [ClipVertex::default(); MAX_CLIPPED];
+            let len = clip(&positions, &mut clipped_polygon);
+            &clipped_polygon[..len]
         };
+        let len = polygon.len();
         if len < 3 {
             stats.clipped_away += 1;
             continue;
         }
-        let polygon = &polygon[..len];
         // Facing from the whole polygon's NDC area (y up): positive is counter-clockwise.
         let mut ndc = [Vec3::ZERO; MAX_CLIPPED];
         for (n, v) in ndc.iter_mut().zip(polygon) {
             *n = v.position.truncate() / v.position.w;
         }
         let ndc = &ndc[..len];
+        // The cross products summed in polygon order (`(i + 1) % len` without a division).
         let area: f32 = (0..len)
             .map(|i| {
-                let (p, q) = (ndc[i], ndc[(i + 1) % len]);
+                let (p, q) = (ndc[i], ndc[if i + 1 == len { 0 } else { i + 1 }]);
                 p.x * q.y - q.x * p.y
             })
             .sum();
@@ -94,23 +107,26 @@ pub(crate) fn assemble<V: Copy>(
         };
         let mut drawn = false;
         for k in 1..len - 1 {
-            let ids = [0, k, k + 1];
-            let s = ids.map(|i| to_screen(&polygon[i], ndc[i]));
-            let Some(edge) = EdgeSetup::new(s.map(|v| v.0)) else {
+            let s = [
+                to_screen(&polygon[0], ndc[0]),
+                to_screen(&polygon[k], ndc[k]),
+                to_screen(&polygon[k + 1], ndc[k + 1]),
+            ];
+            let Some(edge) = EdgeSetup::new([s[0].0, s[1].0, s[2].0]) else {
                 continue;
             };
             drawn = true;
             let (g0, g1, g2) = edge.gradients();
-            let bary = ids.map(|i| polygon[i].bary);
+            let bary = [polygon[0].bary, polygon[k].bary, polygon[k + 1].bary];
             pieces.push(Piece {
                 edge,
-                depth: s.map(|v| v.1),
+                depth: [s[0].1, s[1].1, s[2].1],
                 front,
                 context: PieceContext {
                     varyings,
                     grads: [g0, g1, g2],
-                    inv_w: s.map(|v| v.2),
-                    bary: (bary != [Vec3::X, Vec3::Y, Vec3::Z]).then_some(bary),
+                    inv_w: [s[0].2, s[1].2, s[2].2],
+                    bary: (!whole && bary != [Vec3::X, Vec3::Y, Vec3::Z]).then_some(bary),
                     interpolation: state.interpolation,
                 },
             });

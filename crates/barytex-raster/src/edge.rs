@@ -9,6 +9,8 @@
 
 use glam::{DVec2, Vec2};
 
+use crate::run_bound::RunBound;
+
 /// Sub-pixel precision: 8 bits (1/256 pixel), as GPUs use.
 pub const SUBPIXEL_BITS: u32 = 8;
 const ONE: i64 = 1 << SUBPIXEL_BITS;
@@ -34,9 +36,12 @@ pub(crate) struct EdgeSetup {
     area2: i64,
     /// Pixel bounding box `[x0, x1) × [y0, y1)` (not clipped to any target).
     pub(crate) bbox: [i64; 4],
+    /// The vertices' y in fixed point, input order (vertex `j` is opposite edge `j`).
+    ys: [i64; 3],
 }
 
 /// Rounds a screen coordinate to fixed point (to nearest, halves away from zero).
+#[inline]
 pub(crate) fn fixed(v: f32) -> i64 {
     let x = f64::from(v) * ONE as f64;
     // `f64::round` is a library call on targets without SSE4.1 (six per triangle). Below 2⁵²
@@ -49,65 +54,85 @@ pub(crate) fn fixed(v: f32) -> i64 {
         // for the branch predictor (cachegrind: ~3 mispredictions per triangle).
         t + i64::from(rest >= 0.5) - i64::from(rest <= -0.5)
     } else {
-        x.round() as i64
+        // From 2⁵² on every f64 is an integer: `round` would return `x` itself. (Not calling
+        // it matters: LLVM if-converts this branch and, on targets without SSE4.1, called the
+        // library `round` on every coordinate.) The cast saturates, as before.
+        x as i64
     }
 }
 
 impl EdgeSetup {
     /// `None` for a zero-area triangle (after snapping) or coordinates beyond
     /// [`MAX_COORDINATE`].
+    #[inline]
     pub(crate) fn new(screen: [Vec2; 3]) -> Option<Self> {
-        if screen
-            .iter()
-            .any(|p| !p.is_finite() || p.abs().max_element() > MAX_COORDINATE)
-        {
+        // Written out rather than with iterator adaptors and `map`: this runs once per triangle
+        // and the adaptors were not all inlined (cachegrind: ~450 instructions per triangle).
+        let mut valid = true;
+        for p in &screen {
+            valid &= p.is_finite() & (p.x.abs() <= MAX_COORDINATE) & (p.y.abs() <= MAX_COORDINATE);
+        }
+        if !valid {
             return None;
         }
-        let mut order = [0, 1, 2];
-        let mut v = screen.map(|p| (fixed(p.x), fixed(p.y)));
-        let cross = |v: &[(i64, i64); 3]| {
-            (v[1].0 - v[0].0) * (v[2].1 - v[0].1) - (v[1].1 - v[0].1) * (v[2].0 - v[0].0)
-        };
-        let mut area2 = cross(&v);
+        let mut v = [
+            (fixed(screen[0].x), fixed(screen[0].y)),
+            (fixed(screen[1].x), fixed(screen[1].y)),
+            (fixed(screen[2].x), fixed(screen[2].y)),
+        ];
+        let mut area2 =
+            (v[1].0 - v[0].0) * (v[2].1 - v[0].1) - (v[1].1 - v[0].1) * (v[2].0 - v[0].0);
         if area2 == 0 {
             return None;
         }
-        if area2 < 0 {
+        let swapped = area2 < 0;
+        if swapped {
             v.swap(1, 2);
-            order.swap(1, 2);
             area2 = -area2;
         }
+        // Edge i opposite (wound) vertex i.
         let mut a = [0; 3];
         let mut b = [0; 3];
         let mut c = [0; 3];
         let mut bias = [0; 3];
+        let mut ys = [0; 3];
         for i in 0..3 {
             let (p, q) = (v[(i + 1) % 3], v[(i + 2) % 3]);
             let (dx, dy) = (q.0 - p.0, q.1 - p.1);
             // E(r) = dx·(r.y − p.y) − dy·(r.x − p.x): positive on the inside for this winding.
             let top_left = (dy == 0 && dx > 0) || dy < 0;
-            // Stored under the input vertex this edge is opposite.
-            let j = order[i];
-            a[j] = -dy;
-            b[j] = dx;
-            c[j] = dy * p.0 - dx * p.1;
-            bias[j] = i64::from(!top_left);
+            a[i] = -dy;
+            b[i] = dx;
+            c[i] = dy * p.0 - dx * p.1;
+            bias[i] = i64::from(!top_left);
+            ys[i] = v[i].1;
         }
-        let xs = v.map(|p| p.0);
-        let ys = v.map(|p| p.1);
-        let min = |s: [i64; 3]| s.iter().copied().min().unwrap_or(0);
-        let max = |s: [i64; 3]| s.iter().copied().max().unwrap_or(0);
+        // Stored under the input vertex each edge is opposite.
+        if swapped {
+            for s in [&mut a, &mut b, &mut c, &mut bias, &mut ys] {
+                s.swap(1, 2);
+            }
+        }
+        let (x_lo, x_hi) = (
+            v[0].0.min(v[1].0).min(v[2].0),
+            v[0].0.max(v[1].0).max(v[2].0),
+        );
+        let (y_lo, y_hi) = (
+            v[0].1.min(v[1].1).min(v[2].1),
+            v[0].1.max(v[1].1).max(v[2].1),
+        );
         // Pixels with any sample point (x·256 + [0, 256)) in the triangle's extent: a superset
         // of the pixels whose centre can be inside, and all a multisampled target needs.
-        let first = |lo: i64| lo.div_euclid(ONE);
-        let last = |hi: i64| hi.div_euclid(ONE) + 1;
+        let first = |lo: i64| lo >> SUBPIXEL_BITS;
+        let last = |hi: i64| (hi >> SUBPIXEL_BITS) + 1;
         Some(Self {
             a,
             b,
             c,
             bias,
             area2,
-            bbox: [first(min(xs)), first(min(ys)), last(max(xs)), last(max(ys))],
+            bbox: [first(x_lo), first(y_lo), last(x_hi), last(y_hi)],
+            ys,
         })
     }
 
@@ -196,11 +221,17 @@ impl EdgeSetup {
     /// values at the centre of `(xs, y)` (edge `j` opposite input vertex `j`: `e[j] / area2` is
     /// that vertex's weight; each pixel to the right adds `a·256`).
     ///
-    /// Each edge bounds the row's run on one side: `E(x) = E(x₀) + a·256·(x − x₀) ≥ bias`. The
-    /// bound is estimated in floating point, then corrected with the exact integer test, so the
-    /// runs are exactly the centres that [`covers`](Self::covers) accepts (the top-left rule
-    /// unchanged) and no pixel outside them is tested — thin and small triangles, whose
-    /// bounding boxes are mostly empty, cost a few operations per row rather than per pixel.
+    /// Each sloped edge bounds the runs on one side, at the exact integer boundary of
+    /// `E ≥ bias`, stepped from row to row by [`RunBound`] (no division, no estimate, no branch
+    /// per row on which edge bounds it). A triangle has one or two sloped edges on each side;
+    /// where it has two, they meet at its middle vertex `M`, and rows above `M` are bounded by
+    /// the upper one alone, rows below by the lower one (the left chain of a convex polygon is
+    /// convex: the other edge's line lies outside there), so the rows are walked in two phases
+    /// with one bound per side. A horizontal edge bounds rows, not runs: only the first
+    /// or last row of the box can lie outside it. The runs are exactly the centres that
+    /// [`covers`](Self::covers) accepts (the top-left rule unchanged), and no pixel outside
+    /// them is tested: thin and small triangles, whose bounding boxes are mostly empty, cost a
+    /// few operations per row rather than per pixel.
     #[inline(always)]
     pub(crate) fn for_each_covered_span(
         &self,
@@ -208,66 +239,95 @@ impl EdgeSetup {
         mut span: impl FnMut(i64, (i64, i64), [i64; 3]),
     ) {
         let x0 = self.bbox[0].max(rect[0]);
-        let y0 = self.bbox[1].max(rect[1]);
+        let mut y0 = self.bbox[1].max(rect[1]);
         let x1 = self.bbox[2].min(rect[2]);
-        let y1 = self.bbox[3].min(rect[3]);
+        let mut y1 = self.bbox[3].min(rect[3]);
         if x0 >= x1 || y0 >= y1 {
             return;
         }
-        let n = x1 - x0;
+        let px = x0 * ONE + HALF;
+        let value = |i: usize, y: i64| self.a[i] * px + self.b[i] * (y * ONE + HALF) + self.c[i];
+        // Edges by side: `s > 0` bounds the run on the left, `s < 0` on the right (the `a` of
+        // a triangle sum to zero: one or two on each side).
+        let (mut left, mut right) = ([0_usize; 2], [0_usize; 2]);
+        let (mut nl, mut nr) = (0, 0);
+        for i in 0..3 {
+            if self.a[i] > 0 {
+                left[nl & 1] = i;
+                nl += 1;
+            } else if self.a[i] < 0 {
+                right[nr & 1] = i;
+                nr += 1;
+            } else {
+                while y0 < y1 && value(i, y0) < self.bias[i] {
+                    y0 += 1;
+                }
+                while y1 > y0 && value(i, y1 - 1) < self.bias[i] {
+                    y1 -= 1;
+                }
+            }
+        }
+        if y0 >= y1 {
+            return;
+        }
+        // The lone edge on one side spans all rows; the other side's edges take the rows
+        // above `split` (`upper`) and from `split` on (`lower`); with one edge there, it is
+        // both.
+        let (lone, lone_is_left, pair) = if nl == 2 {
+            (right[0], false, left)
+        } else {
+            (left[0], true, if nr == 2 { right } else { [right[0]; 2] })
+        };
+        let (upper, lower, split) = if pair[0] == pair[1] {
+            (pair[0], pair[0], y1)
+        } else {
+            // The middle vertex is opposite the lone edge; the upper edge of the pair joins it
+            // to the top vertex, so it is opposite the lower (larger y) of the other two.
+            let m = self.ys[lone];
+            let (upper, lower) = if self.ys[pair[0]] > self.ys[pair[1]] {
+                (pair[0], pair[1])
+            } else {
+                (pair[1], pair[0])
+            };
+            // The first row whose centre is at or below M. On M's own row both edges give the
+            // same run: both lines pass through M, and edges on the same side have the same
+            // bias (a left edge, `a > 0`, is a left edge of the top-left rule; a right one is
+            // not), so either may take it.
+            let split = (m - HALF + ONE - 1) >> SUBPIXEL_BITS;
+            (upper, lower, split.clamp(y0, y1))
+        };
+        let mut e: [i64; 3] = core::array::from_fn(|i| value(i, y0));
         let step = self.a.map(|a| a * ONE);
         let down = self.b.map(|b| b * ONE);
-        let inv_step = step.map(|s| if s == 0 { 0.0 } else { 1.0 / s as f64 });
-        let (px, py) = (x0 * ONE + HALF, y0 * ONE + HALF);
-        let mut e: [i64; 3] = core::array::from_fn(|i| self.a[i] * px + self.b[i] * py + self.c[i]);
-        for y in y0..y1 {
-            // The run [lo, hi) of pixel offsets from x0 inside all three edges.
-            let (mut lo, mut hi) = (0_i64, n);
-            for i in 0..3 {
-                let (e0, s, bias) = (e[i], step[i], self.bias[i]);
-                let inside = |k: i64| e0 + s * k >= bias;
-                if s == 0 {
-                    if e0 < bias {
-                        hi = 0;
-                    }
-                    continue;
-                }
-                // An edge that holds over the whole row bounds nothing (most rows of a
-                // triangle meet two of its edges, not three).
-                if (s > 0 && inside(lo)) || (s < 0 && inside(hi - 1)) {
-                    continue;
-                }
-                // The offset where the edge crosses `bias`, estimated (the cast saturates),
-                // then moved to the exact boundary.
-                let mut k = ((bias - e0) as f64 * inv_step[i]) as i64;
-                k = k.clamp(0, n);
-                if s > 0 {
-                    // Inside from the first k with E ≥ bias on.
-                    while k < n && !inside(k) {
-                        k += 1;
-                    }
-                    while k > 0 && inside(k - 1) {
-                        k -= 1;
-                    }
-                    lo = lo.max(k);
-                } else {
-                    // Inside up to the last k with E ≥ bias: the run ends after it.
-                    while k > 0 && !inside(k - 1) {
-                        k -= 1;
-                    }
-                    while k < n && inside(k) {
-                        k += 1;
-                    }
-                    hi = hi.min(k);
-                }
+        let n = x1 - x0;
+        let bound =
+            |e: &[i64; 3], i: usize| RunBound::new(e[i] - self.bias[i], step[i].abs(), down[i]);
+        let mut lone_bound = bound(&e, lone);
+        let mut y = y0;
+        for (edge, end) in [(upper, split), (lower, y1)] {
+            if y >= end {
+                continue;
             }
-            if lo < hi {
-                let at: [i64; 3] = core::array::from_fn(|i| e[i] + step[i] * lo);
-                span(y, (x0 + lo, x0 + hi), at);
+            let (mut l, mut r) = if lone_is_left {
+                (lone_bound, bound(&e, edge))
+            } else {
+                (bound(&e, edge), lone_bound)
+            };
+            while y < end {
+                let lo = l.first().max(0);
+                let hi = r.end().min(n);
+                if lo < hi {
+                    let at: [i64; 3] = core::array::from_fn(|i| e[i] + step[i] * lo);
+                    span(y, (x0 + lo, x0 + hi), at);
+                }
+                for i in 0..3 {
+                    e[i] += down[i];
+                }
+                l.advance();
+                r.advance();
+                y += 1;
             }
-            for i in 0..3 {
-                e[i] += down[i];
-            }
+            lone_bound = if lone_is_left { l } else { r };
         }
     }
 
@@ -275,6 +335,12 @@ impl EdgeSetup {
     #[inline]
     pub(crate) fn x_step(&self) -> [i64; 3] {
         self.a.map(|a| a * ONE)
+    }
+
+    /// Twice the area in fixed-point units: the sum of the three edge values anywhere.
+    #[inline]
+    pub(crate) fn area2(&self) -> i64 {
+        self.area2
     }
 
     /// `1 / area2`: edge values times it are barycentrics.
@@ -446,6 +512,55 @@ mod tests {
         assert!(
             checked > 100_000,
             "too few covered pixels checked: {checked}"
+        );
+    }
+
+    /// The two-phase walk on small triangles whose vertices lie on pixel centres and half-pixel
+    /// steps: the middle vertex is often exactly on a row's centre or a pixel's, and the
+    /// rectangles start and end above, on and below it.
+    #[test]
+    fn spans_split_exactly_at_the_middle_vertex() {
+        let mut next = stream(0xD1B5_4A32_D192_ED03);
+        let mut on_centre = 0;
+        for _ in 0..20_000 {
+            let mut coordinate = || (next() % 24) as f32 * 0.5 - 2.0;
+            let screen = [(); 3].map(|()| Vec2::new(coordinate(), coordinate()));
+            let Some(edge) = EdgeSetup::new(screen) else {
+                continue;
+            };
+            let r = next();
+            let rect = [
+                (r % 5) as i64 - 2,
+                ((r >> 8) % 7) as i64 - 2,
+                ((r >> 16) % 6) as i64 + 4,
+                ((r >> 24) % 7) as i64 + 3,
+            ];
+            let clipped = [
+                edge.bbox[0].max(rect[0]),
+                edge.bbox[1].max(rect[1]),
+                edge.bbox[2].min(rect[2]),
+                edge.bbox[3].min(rect[3]),
+            ];
+            let mut spans = Vec::new();
+            edge.for_each_covered_span(rect, |y, (xs, xe), mut e| {
+                for x in xs..xe {
+                    spans.push((x, y, e));
+                    for (value, a) in e.iter_mut().zip(edge.a) {
+                        *value += a * ONE;
+                    }
+                }
+            });
+            let expected = if clipped[0] < clipped[2] && clipped[1] < clipped[3] {
+                brute_force(&edge, clipped)
+            } else {
+                Vec::new()
+            };
+            assert_eq!(spans, expected, "{screen:?} in {rect:?}");
+            on_centre += usize::from(edge.ys.iter().any(|y| y.rem_euclid(ONE) == HALF));
+        }
+        assert!(
+            on_centre > 5_000,
+            "too few vertices on row centres: {on_centre}"
         );
     }
 }

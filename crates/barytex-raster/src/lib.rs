@@ -46,6 +46,8 @@ mod edge;
 mod error;
 mod format;
 mod primitives;
+mod run_bound;
+mod run_depth;
 mod sample_mask;
 mod samples;
 pub mod scanline;

@@ -7,6 +7,7 @@ use glam::{UVec2, Vec4};
 use crate::assemble::Piece;
 use crate::draw::DrawStats;
 use crate::format::ColorFormat;
+use crate::run_depth::for_each_run_pixel;
 use crate::samples::SamplePattern;
 use crate::state::{Blend, DepthCompare, Interpolation, PipelineState};
 use crate::target::{TILE, premultiply};
@@ -90,77 +91,84 @@ fn shade_single<S: Shader, C: ColorFormat>(
         );
         return;
     }
-    // The depth test and the blend resolved once per piece, not per pixel: the common cases
-    // get their own loop (the comparison a single instruction, the blend a store).
-    match (state.depth_compare, state.blend) {
-        (Some(DepthCompare::Less), Blend::Replace) => {
-            shade_centres::<S, C, _, false>(piece, shader, state, tile, stats, |z, s| z < s);
+    // The depth test, the depth write, the mask and the blend resolved once per piece, not
+    // per pixel: the common cases get their own loop (the comparison a single instruction,
+    // the blend and the depth write a store, no mask to read).
+    let write = state.depth_write;
+    let keep_depth = move |z: f32, stored: f32| if write { z } else { stored };
+    match (
+        state.depth_compare,
+        state.blend,
+        tile.mask.is_none() && write,
+    ) {
+        (Some(DepthCompare::Less), Blend::Replace, true) => {
+            let (test, store) = (|z, s| z < s, |z, _| z);
+            shade_centres::<S, C, false, false>(piece, shader, tile, stats, test, store);
         }
-        (Some(DepthCompare::LessEqual), Blend::Replace) => {
-            shade_centres::<S, C, _, false>(piece, shader, state, tile, stats, |z, s| z <= s);
+        (Some(DepthCompare::LessEqual), Blend::Replace, true) => {
+            let (test, store) = (|z, s| z <= s, |z, _| z);
+            shade_centres::<S, C, false, false>(piece, shader, tile, stats, test, store);
         }
-        (Some(DepthCompare::Less), Blend::Over) => {
-            shade_centres::<S, C, _, true>(piece, shader, state, tile, stats, |z, s| z < s);
+        (Some(DepthCompare::Less), Blend::Over, _) => {
+            let test = |z, s| z < s;
+            shade_centres::<S, C, true, true>(piece, shader, tile, stats, test, keep_depth);
         }
-        (op, Blend::Replace) => {
+        (op, Blend::Replace, _) => {
             let test = |z, s| op.is_none_or(|op: DepthCompare| op.passes(z, s));
-            shade_centres::<S, C, _, false>(piece, shader, state, tile, stats, test);
+            shade_centres::<S, C, false, true>(piece, shader, tile, stats, test, keep_depth);
         }
-        (op, Blend::Over) => {
+        (op, Blend::Over, _) => {
             let test = |z, s| op.is_none_or(|op: DepthCompare| op.passes(z, s));
-            shade_centres::<S, C, _, true>(piece, shader, state, tile, stats, test);
+            shade_centres::<S, C, true, true>(piece, shader, tile, stats, test, keep_depth);
         }
     }
 }
 
-/// The covered pixel centres of a piece: depth test `passes(fragment, stored)`, the fragment
-/// stage, then replace (`OVER` false) or "over" blending. Perspective-correct or affine
-/// weights; the results are those of [`blend`] and [`DepthCompare::passes`] pixel by pixel.
+/// The covered pixel centres of a piece: the tile's mask (if `MASKED`), depth test
+/// `passes(fragment, stored)`, the fragment stage, replace (`OVER` false) or "over" blending,
+/// and `store(fragment, stored)` into the depth buffer. Perspective-correct or affine weights;
+/// the results are those of [`blend`] and [`DepthCompare::passes`] pixel by pixel.
 #[inline]
-fn shade_centres<S: Shader, C: ColorFormat, T: Fn(f32, f32) -> bool, const OVER: bool>(
+fn shade_centres<S: Shader, C: ColorFormat, const OVER: bool, const MASKED: bool>(
     piece: &Piece<S::Varying>,
     shader: &S,
-    state: &PipelineState,
     tile: &mut TileTarget<'_, C>,
     stats: &mut DrawStats,
-    passes: T,
+    passes: impl Fn(f32, f32) -> bool,
+    store: impl Fn(f32, f32) -> f32,
 ) {
     let context = &piece.context;
     let depths = piece.depth;
     let inv_area = piece.edge.inv_area();
     let (ox, oy) = tile.origin;
-    let mask = tile.mask;
-    let depth_write = state.depth_write;
+    let mask = tile.mask.filter(|_| MASKED);
     let front_facing = piece.front;
     let color = &mut *tile.color;
     let depth = &mut *tile.depth;
-    let (mut shaded, mut discarded, mut failed) = (0_u64, 0_u64, 0_u64);
+    // Fragments shaded = pixels visited − masked − failed (one counter per pixel less).
+    let (mut visited, mut skipped, mut discarded, mut failed) = (0_u64, 0_u64, 0_u64, 0_u64);
     let step = piece.edge.x_step();
+    let area2 = piece.edge.area2();
     piece
         .edge
-        .for_each_covered_span(tile.rect, |y, (xs, xe), mut e| {
-            // The span's slices of the tile's rows: no bounds check per pixel.
+        .for_each_covered_span(tile.rect, |y, (xs, xe), e| {
+            // The span's slices of the tile's rows.
             let start = ((y - oy) * i64::from(TILE) + (xs - ox)) as usize;
-            let end = start + (xe - xs) as usize;
-            let keep = mask.map(|m| &m[start..end]);
-            let pixels = color[start..end].iter_mut().zip(&mut depth[start..end]);
-            for (k, (color, stored)) in pixels.enumerate() {
-                // Edge j is opposite input vertex j: its value is that vertex's weight.
-                let lambda = [
-                    e[0] as f64 * inv_area,
-                    e[1] as f64 * inv_area,
-                    e[2] as f64 * inv_area,
-                ];
-                for i in 0..3 {
-                    e[i] += step[i];
+            let len = (xe - xs) as usize;
+            let keep = mask.map(|m| &m[start..start + len]);
+            let color = &mut color[start..start + len];
+            let depth = &mut depth[start..start + len];
+            visited += len as u64;
+            // Edge j is opposite input vertex j: its value is that vertex's weight.
+            for_each_run_pixel(e, step, area2, inv_area, depths, len, |k, lambda, z| {
+                if MASKED && keep.is_some_and(|keep| !keep[k]) {
+                    skipped += 1;
+                    return;
                 }
-                if keep.is_some_and(|keep| !keep[k]) {
-                    continue;
-                }
-                let z = (0..3).map(|i| lambda[i] * depths[i]).sum::<f64>() as f32;
+                let stored = &mut depth[k];
                 if !passes(z, *stored) {
                     failed += 1;
-                    continue;
+                    return;
                 }
                 let weights = context.weights(lambda);
                 let fragment = Fragment {
@@ -172,23 +180,21 @@ fn shade_centres<S: Shader, C: ColorFormat, T: Fn(f32, f32) -> bool, const OVER:
                     lambda,
                     piece: context,
                 };
-                shaded += 1;
                 let Some(c) = shader.fragment(&fragment) else {
                     discarded += 1;
-                    continue;
+                    return;
                 };
+                let color = &mut color[k];
                 *color = if OVER {
                     let src = premultiply(c);
                     C::store_premultiplied(src + C::load(*color) * (1.0 - src.w))
                 } else {
                     C::store(c)
                 };
-                if depth_write {
-                    *stored = z;
-                }
-            }
+                *stored = store(z, *stored);
+            });
         });
-    stats.fragments_shaded += shaded;
+    stats.fragments_shaded += visited - skipped - failed;
     stats.fragments_discarded += discarded;
     stats.fragments_depth_failed += failed;
 }
