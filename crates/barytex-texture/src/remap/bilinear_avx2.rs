@@ -78,47 +78,60 @@ impl pulp::NullaryFnOnce for Run<'_, '_> {
     }
 }
 
-/// The blocks of `coords` into `out`. (Every function called inside `vectorize` is
-/// `#[inline(always)]`: one left out is compiled without AVX2, its intrinsics become calls.)
+/// The blocks of `coords` into `out`, the addressing of each block one block ahead of its blend
+/// so that the blend can prefetch the texels of the pixels `BLOCK` on at their exact offsets.
+/// (Every function called inside `vectorize` is `#[inline(always)]`: one left out is compiled
+/// without AVX2, and its intrinsics become calls.)
 #[inline(always)]
 fn run(address: &address::Address64, blend: &blend::Blend<'_>, coords: &[Vec2], out: &mut [Rgba8]) {
-    let mut block = Block {
-        offsets: [0; 2 * BLOCK],
-        weights: [0.0; 2 * BLOCK],
+    // The last, partial block's coordinates padded with (0, 0): finite, their pixels dropped.
+    let full = coords.len() / BLOCK * BLOCK;
+    let mut padded = [Vec2::ZERO; BLOCK];
+    padded[..coords.len() - full].copy_from_slice(&coords[full..]);
+    let mut blocks = coords[..full]
+        .chunks_exact(BLOCK)
+        .chain((full < coords.len()).then_some(&padded[..]));
+    let Some(mut this_coords) = blocks.next() else {
+        return;
     };
-    let mut blocks = coords.chunks_exact(BLOCK);
-    let mut outs = out.chunks_exact_mut(BLOCK);
-    for (c, o) in (&mut blocks).zip(&mut outs) {
-        one_block(address, blend, &mut block, c, o);
-    }
-    // The last, partial block: padded with (0, 0), finite, whose pixels are dropped.
-    let (c, o) = (blocks.remainder(), outs.into_remainder());
-    if !c.is_empty() {
-        let mut padded = [Vec2::ZERO; BLOCK];
-        padded[..c.len()].copy_from_slice(c);
-        let mut pixels = [Rgba8::default(); BLOCK];
-        one_block(address, blend, &mut block, &padded, &mut pixels);
-        o.copy_from_slice(&pixels[..c.len()]);
+    let mut this = Block::new();
+    let mut next = Block::new();
+    let mut this_finite = address.block(this_coords, &mut this);
+    for out in out.chunks_mut(BLOCK) {
+        let next_coords = blocks.next();
+        let mut next_finite = true;
+        if let Some(c) = next_coords {
+            next_finite = address.block(c, &mut next);
+        }
+        // The last block prefetches itself again (a hint: no effect on any result).
+        let ahead = if next_coords.is_some() { &next } else { &this };
+        if out.len() == BLOCK {
+            blend.block(&this, ahead, out);
+        } else {
+            let mut pixels = [Rgba8::default(); BLOCK];
+            blend.block(&this, ahead, &mut pixels);
+            out.copy_from_slice(&pixels[..out.len()]);
+        }
+        if !this_finite {
+            for (c, o) in this_coords.iter().zip(out) {
+                if !c.is_finite() {
+                    *o = Rgba8([0; 4]);
+                }
+            }
+        }
+        core::mem::swap(&mut this, &mut next);
+        if let Some(c) = next_coords {
+            this_coords = c;
+        }
+        this_finite = next_finite;
     }
 }
 
-/// One block of `BLOCK` pixels: both passes, then transparent black where a coordinate is not
-/// finite.
-#[inline(always)]
-fn one_block(
-    address: &address::Address64,
-    blend: &blend::Blend<'_>,
-    block: &mut Block,
-    coords: &[Vec2],
-    out: &mut [Rgba8],
-) {
-    let finite = address.block(coords, block);
-    blend.block(block, out);
-    if !finite {
-        for (c, o) in coords.iter().zip(out) {
-            if !c.is_finite() {
-                *o = Rgba8([0; 4]);
-            }
+impl Block {
+    fn new() -> Self {
+        Self {
+            offsets: [0; 2 * BLOCK],
+            weights: [0.0; 2 * BLOCK],
         }
     }
 }

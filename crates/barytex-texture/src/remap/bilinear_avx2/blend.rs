@@ -7,7 +7,10 @@
 //! - **blend** in f32 in the scalar path's order (`a + (b − a)·t`, separate multiply and add: no
 //!   fused multiply-add, whose single rounding would change results), `+ ½`, truncation;
 //! - **bytes**: the saturating packs of both registers at once, one lane permutation into pixel
-//!   order, one 16-byte store.
+//!   order, one 16-byte store;
+//! - **prefetch**: every four pixels, the two rows of the pixel `BLOCK` on, at its exact offsets
+//!   (the next block's addressing is done first). The loop otherwise waits on these loads: the
+//!   warp moves to another source row every few pixels, and the bottom row is new data.
 
 use core::arch::x86_64::{__m256, __m256i};
 
@@ -15,11 +18,6 @@ use pulp::x86::V3;
 
 use super::Block;
 use crate::Rgba8;
-
-/// How many texels ahead of a pixel's left tap its rows are prefetched: the warp moves about one
-/// texel a pixel, so this is the data of the pixels 32 on (measured before the two passes: 16,
-/// 32 and 64 all help, 32 most).
-const PREFETCH_AHEAD: usize = 32;
 
 /// The texel pair `(i, i + 1)` as one little-endian 64-bit integer (texel `i` in the low bytes).
 #[inline(always)]
@@ -113,17 +111,18 @@ impl<'a> Blend<'a> {
 
     /// The `BLOCK` pixels of `block` into `out`.
     #[inline(always)]
-    pub(super) fn block(&self, block: &Block, out: &mut [Rgba8]) {
+    pub(super) fn block(&self, block: &Block, ahead: &Block, out: &mut [Rgba8]) {
         let (avx, avx2) = (self.simd.avx, self.simd.avx2);
-        for ((offsets, weights), o) in block
+        for (((offsets, weights), o), ahead) in block
             .offsets
             .chunks_exact(8)
             .zip(block.weights.chunks_exact(8))
             .zip(out.chunks_exact_mut(4))
+            .zip(ahead.offsets.chunks_exact(8))
         {
-            // Pixel a's two rows, some texels on (a hint: no effect on any result).
-            for &row in &offsets[..2] {
-                if let Some(t) = self.texels.get(row as usize + PREFETCH_AHEAD) {
+            // Pixel a's two rows `BLOCK` pixels on (a hint: no effect on any result).
+            for &row in &ahead[..2] {
+                if let Some(t) = self.texels.get(row as usize) {
                     safe_arch::prefetch_t0(t);
                 }
             }
