@@ -15,10 +15,13 @@
 //! lane extraction, no 64-bit index arithmetic, one bounds check per row pair).
 
 mod address;
+mod address32;
 mod blend;
 
 use glam::Vec2;
 use pulp::x86::V3;
+
+use address::Addressing;
 
 use crate::{Rgba8, Texture2d};
 
@@ -49,27 +52,37 @@ pub(super) fn token() -> Option<V3> {
 /// Remaps `coords` into `out` (same length, checked by the caller); `applies(source)` holds.
 pub(super) fn remap(simd: V3, source: &Texture2d<Rgba8>, coords: &[Vec2], out: &mut [Rgba8]) {
     let (w, h) = source.size();
-    let address = address::Address64::new(simd, w, h);
     let blend = blend::Blend::new(simd, source.texels());
-    simd.vectorize(Run {
-        address,
-        blend,
-        coords,
-        out,
-    });
+    if w.is_power_of_two() && h.is_power_of_two() {
+        let address = address32::Address32::new(simd, w, h);
+        simd.vectorize(Run {
+            address,
+            blend,
+            coords,
+            out,
+        });
+    } else {
+        let address = address::Address64::new(simd, w, h);
+        simd.vectorize(Run {
+            address,
+            blend,
+            coords,
+            out,
+        });
+    }
 }
 
 /// The remap as `vectorize`'s operation: a struct rather than a closure, because `call` must be
 /// `#[inline(always)]` for the whole loop to be compiled inside `vectorize`'s AVX2 function (a
 /// closure this large is not inlined there, and its intrinsics become calls).
-struct Run<'a, 'b> {
-    address: address::Address64,
+struct Run<'a, 'b, A> {
+    address: A,
     blend: blend::Blend<'a>,
     coords: &'b [Vec2],
     out: &'b mut [Rgba8],
 }
 
-impl pulp::NullaryFnOnce for Run<'_, '_> {
+impl<A: Addressing> pulp::NullaryFnOnce for Run<'_, '_, A> {
     type Output = ();
 
     #[inline(always)]
@@ -83,7 +96,7 @@ impl pulp::NullaryFnOnce for Run<'_, '_> {
 /// (Every function called inside `vectorize` is `#[inline(always)]`: one left out is compiled
 /// without AVX2, and its intrinsics become calls.)
 #[inline(always)]
-fn run(address: &address::Address64, blend: &blend::Blend<'_>, coords: &[Vec2], out: &mut [Rgba8]) {
+fn run(address: &impl Addressing, blend: &blend::Blend<'_>, coords: &[Vec2], out: &mut [Rgba8]) {
     // The last, partial block's coordinates padded with (0, 0): finite, their pixels dropped.
     let full = coords.len() / BLOCK * BLOCK;
     let mut padded = [Vec2::ZERO; BLOCK];
@@ -96,12 +109,12 @@ fn run(address: &address::Address64, blend: &blend::Blend<'_>, coords: &[Vec2], 
     };
     let mut this = Block::new();
     let mut next = Block::new();
-    let mut this_finite = address.block(this_coords, &mut this);
+    let mut this_finite = address::address_block(address, this_coords, &mut this);
     for out in out.chunks_mut(BLOCK) {
         let next_coords = blocks.next();
         let mut next_finite = true;
         if let Some(c) = next_coords {
-            next_finite = address.block(c, &mut next);
+            next_finite = address::address_block(address, c, &mut next);
         }
         // The last block prefetches itself again (a hint: no effect on any result).
         let ahead = if next_coords.is_some() { &next } else { &this };
@@ -147,7 +160,19 @@ mod tests {
             eprintln!("skipped: this CPU has no AVX2/FMA");
             return;
         };
-        for (w, h) in [(2, 1), (2, 2), (3, 5), (7, 3), (64, 64), (100, 37), (1, 9)] {
+        // Powers of two on both sides take the f32 addressing, the others the f64 one.
+        for (w, h) in [
+            (2, 1),
+            (2, 2),
+            (3, 5),
+            (7, 3),
+            (64, 64),
+            (16, 256),
+            (1024, 2),
+            (100, 37),
+            (64, 37),
+            (1, 9),
+        ] {
             let src = texture(w, h, u64::from(w * 131 + h));
             let mut c = coords(w, h, u64::from(w + 7 * h));
             if w % 2 == 1 {

@@ -77,14 +77,6 @@ impl Address64 {
         let (o1, w1) = self.two(avx._mm256_cvtps_pd(avx._mm256_extractf128_ps::<1>(uv)));
         (avx._mm256_set_m128i(o1, o0), avx._mm256_set_m128(w1, w0))
     }
-
-    /// Fills `block` from `BLOCK` coordinates; whether all of them were finite (a non-finite
-    /// one is replaced by 0, whose pixel the caller overwrites).
-    #[inline(always)]
-    pub(super) fn block(&self, coords: &[Vec2], block: &mut Block) -> bool {
-        debug_assert_eq!(coords.len(), BLOCK);
-        address_block(self, coords, block)
-    }
 }
 
 impl Addressing for Address64 {
@@ -109,10 +101,11 @@ pub(super) trait Addressing {
     fn four(&self, uv: __m256) -> (__m256i, __m256);
 }
 
-/// The loop shared by the addressing variants: eight coordinate lanes a step, non-finite ones
-/// zeroed and remembered.
+/// Fills `block` from `BLOCK` coordinates, eight coordinate lanes a step; whether all of them
+/// were finite (a non-finite one is replaced by 0, whose pixel the caller overwrites).
 #[inline(always)]
 pub(super) fn address_block(pass: &impl Addressing, coords: &[Vec2], block: &mut Block) -> bool {
+    debug_assert_eq!(coords.len(), BLOCK);
     let avx = pass.simd().avx;
     let mut finite_all = avx._mm256_castsi256_ps(avx._mm256_set1_epi32(-1));
     for ((c, o), w) in coords
