@@ -1,5 +1,5 @@
 //! The bilinear remap of RGBA8 in AVX2, selected at run time (through `pulp`, whose `V3` token
-//! proves the CPU has AVX2 and FMA and runs a closure compiled for them; the workspace forbids
+//! proves the CPU has AVX2 and FMA and runs an operation compiled for them; the workspace forbids
 //! `unsafe`, and calling a `#[target_feature]` function directly needs it). Bit-identical to the
 //! scalar reference and to the SSE2 kernel: the same numbers from the same operations in the
 //! same order.
@@ -25,8 +25,9 @@ use address::Addressing;
 
 use crate::{Rgba8, Texture2d};
 
-/// The pixels of one block. 64: the block's arrays (768 bytes) stay in L1 beside the texels,
-/// and the non-finite fix-up test is rare.
+/// The pixels of one block. 64: the two blocks' arrays (2 KiB) stay in L1 beside the texels,
+/// the fix-up test for non-finite coordinates is rare, and the prefetch distance (one block)
+/// covers the memory latency; blocks of 32 and 128 pixels measured 1–4 % slower.
 const BLOCK: usize = 64;
 
 /// The first pass's results for one block.
@@ -107,22 +108,27 @@ fn run(address: &impl Addressing, blend: &blend::Blend<'_>, coords: &[Vec2], out
     let Some(mut this_coords) = blocks.next() else {
         return;
     };
-    let mut this = Block::new();
-    let mut next = Block::new();
-    let mut this_finite = address::address_block(address, this_coords, &mut this);
+    let (mut first, mut second) = (Block::new(), Block::new());
+    // Swapped as references after each block: swapping the arrays would copy 2 KiB a block.
+    let (mut this, mut next) = (&mut first, &mut second);
+    let mut this_finite = address::address_block(address, this_coords, this);
     for out in out.chunks_mut(BLOCK) {
         let next_coords = blocks.next();
         let mut next_finite = true;
         if let Some(c) = next_coords {
-            next_finite = address::address_block(address, c, &mut next);
+            next_finite = address::address_block(address, c, next);
         }
         // The last block prefetches itself again (a hint: no effect on any result).
-        let ahead = if next_coords.is_some() { &next } else { &this };
+        let ahead = if next_coords.is_some() {
+            &*next
+        } else {
+            &*this
+        };
         if out.len() == BLOCK {
-            blend.block(&this, ahead, out);
+            blend.block(this, ahead, out);
         } else {
             let mut pixels = [Rgba8::default(); BLOCK];
-            blend.block(&this, ahead, &mut pixels);
+            blend.block(this, ahead, &mut pixels);
             out.copy_from_slice(&pixels[..out.len()]);
         }
         if !this_finite {
