@@ -3,7 +3,7 @@
 //! pixel on this kind of machine when the project set its speed targets; `tools/opencv_remap.py`
 //! measures it on the same warp beside this bench). In the same run:
 //!
-//! - barytex `remap_bilinear_rgba8` (exact f64 texel addressing, f32 weights, one rounding);
+//! - barytex `remap_bilinear_rgba8` (exact texel addressing, f32 weights, one rounding);
 //! - barytex `TextureSampler::sample_level` with a bilinear descriptor (the general path:
 //!   premultiplied filtering, every address mode), then encoded to RGBA8;
 //! - image `imageops::sample_bilinear` (the peer in Rust).

@@ -17,8 +17,9 @@ mod bilinear_sse2;
 ///
 /// The blend runs in byte units with f32 weights (no per-texel division, no lookup tables),
 /// and is rounded once per channel; on x86-64 an AVX2 kernel (selected at run time where the CPU
-/// has AVX2 and FMA, two pixels per register) or else an SSE2 kernel (one pixel per register)
-/// computes the same bytes; a non-finite coordinate gives transparent black. Colours are
+/// has AVX2 and FMA: blocks of 64 pixels, addressed in one vectorized pass, then loaded and
+/// blended two pixels per register) or else an SSE2 kernel (one pixel per register) computes the
+/// same bytes; a non-finite coordinate gives transparent black. Colours are
 /// blended as stored, which is exact for opaque images (translucent images: premultiply first or
 /// use [`TextureSampler`](crate::TextureSampler), which filters premultiplied).
 ///
@@ -144,6 +145,9 @@ pub(crate) mod test_inputs {
             f32::INFINITY,
             f32::NEG_INFINITY,
             f32::MIN_POSITIVE,
+            f32::MAX,
+            -f32::MAX,
+            1e-45,
         ];
         for &a in &specials {
             for &b in &specials {
