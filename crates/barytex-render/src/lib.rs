@@ -345,7 +345,8 @@ mod tests {
 
     /// Interpolating only what a material reads changes no pixel by more than one sRGB step
     /// (the one difference: an absent vertex colour is exactly white instead of a weighted sum
-    /// of whites), for every shading model and with and without fog.
+    /// of whites), for every shading model and with and without fog; the unlit short path
+    /// (taken only with `Varyings::Read`) is checked against the general one here too.
     #[test]
     fn skipping_unread_varyings_changes_no_pixel() {
         let scene = demo_scene();

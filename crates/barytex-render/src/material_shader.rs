@@ -76,8 +76,9 @@ pub(crate) struct MaterialShader<'a> {
     pub(crate) textures: &'a [PreparedTexture],
     pub(crate) lights: &'a [Light],
     pub(crate) ambient: Vec3,
-    /// Interpolate every part of the varying, read or not (tests compare it with the
-    /// default, which interpolates only what [`reads`](MaterialShader::reads) names).
+    /// Interpolate every part of the varying, read or not, and shade every material through
+    /// the general path (tests compare it with the default, which interpolates only what
+    /// [`reads`](MaterialShader::reads) names and takes the unlit short path).
     pub(crate) interpolate_all: bool,
 }
 
@@ -258,7 +259,7 @@ impl Shader for MaterialShader<'_> {
     }
 
     fn fragment(&self, f: &Fragment<'_, Surface>) -> Option<Vec4> {
-        if !self.material.lit && self.fog.is_none() {
+        if !self.material.lit && self.fog.is_none() && !self.interpolate_all {
             return self.unlit(f);
         }
         let s = f.varying;
