@@ -490,6 +490,15 @@ fn linear_levels(lod: f32, last: usize) -> (usize, usize, f32) {
     if lod <= 0.0 {
         return (0, 0, 0.0);
     }
+    if lod < 8_388_608.0 {
+        // 0 < λ < 2²³, the common case: the floor is the truncation, an exact integer, and the
+        // levels are integer minima — what the general lines below compute, without float
+        // comparisons and saturating float-to-integer casts.
+        let i = lod as u32;
+        let floor = i as f32;
+        let i = i as usize;
+        return (i.min(last), (i + 1).min(last), lod - floor);
+    }
     let floor = floor_f32(lod);
     (
         to_level(floor, last),
@@ -542,7 +551,47 @@ impl<T: Texel> Sampler for TextureSampler<T> {
 
 #[cfg(test)]
 mod tests {
-    use super::floor_f32;
+    use super::{floor_f32, linear_levels, to_level};
+
+    #[test]
+    fn linear_levels_short_path_is_the_general_formula() {
+        let general = |lod: f32, last: usize| {
+            if lod <= 0.0 {
+                return (0, 0, 0.0);
+            }
+            let floor = floor_f32(lod);
+            (
+                to_level(floor, last),
+                to_level(floor + 1.0, last),
+                lod - floor,
+            )
+        };
+        let mut lods: Vec<f32> = (0..=u32::MAX)
+            .step_by(4099)
+            .map(f32::from_bits)
+            .filter(|x| *x > 0.0 && x.is_finite())
+            .collect();
+        for i in 0..40_u32 {
+            let x = i as f32;
+            lods.extend([x, x.next_up(), x.next_down(), x + 0.5]);
+        }
+        lods.extend([
+            8_388_607.5,
+            8_388_608.0,
+            8_388_609.0,
+            f32::MAX,
+            f32::INFINITY,
+        ]);
+        for last in [0, 1, 5, 11, 31] {
+            for &lod in &lods {
+                let (a, b) = (linear_levels(lod, last), general(lod, last));
+                assert!(
+                    a.0 == b.0 && a.1 == b.1 && a.2.to_bits() == b.2.to_bits(),
+                    "{lod:e}, last {last}: {a:?} vs {b:?}"
+                );
+            }
+        }
+    }
 
     #[test]
     fn floor_f32_is_the_library_floor_bit_for_bit() {
