@@ -458,6 +458,39 @@ mod tests {
         }
     }
 
+    /// Checks that the spans `edge` reports inside `rect` (none empty) walk exactly the
+    /// centres the per-pixel test covers, with the edge values stepped along them; returns
+    /// how many there are.
+    fn assert_spans_are_the_covered_centres(
+        edge: &EdgeSetup,
+        rect: [i64; 4],
+        screen: &[Vec2; 3],
+    ) -> usize {
+        let clipped = [
+            edge.bbox[0].max(rect[0]),
+            edge.bbox[1].max(rect[1]),
+            edge.bbox[2].min(rect[2]),
+            edge.bbox[3].min(rect[3]),
+        ];
+        let mut spans = Vec::new();
+        edge.for_each_covered_span(rect, |y, (xs, xe), mut e| {
+            assert!(xs < xe, "empty span reported");
+            for x in xs..xe {
+                spans.push((x, y, e));
+                for (value, a) in e.iter_mut().zip(edge.a) {
+                    *value += a * ONE;
+                }
+            }
+        });
+        let expected = if clipped[0] < clipped[2] && clipped[1] < clipped[3] {
+            brute_force(edge, clipped)
+        } else {
+            Vec::new()
+        };
+        assert_eq!(spans, expected, "{screen:?} in {rect:?}");
+        expected.len()
+    }
+
     #[test]
     fn spans_are_exactly_the_covered_centres() {
         let mut next = stream(0x9E37_79B9_7F4A_7C15);
@@ -485,29 +518,7 @@ mod tests {
             } else {
                 [13, 7, 50, 41]
             };
-            let clipped = [
-                edge.bbox[0].max(rect[0]),
-                edge.bbox[1].max(rect[1]),
-                edge.bbox[2].min(rect[2]),
-                edge.bbox[3].min(rect[3]),
-            ];
-            let mut spans = Vec::new();
-            edge.for_each_covered_span(rect, |y, (xs, xe), mut e| {
-                assert!(xs < xe, "empty span reported");
-                for x in xs..xe {
-                    spans.push((x, y, e));
-                    for (value, a) in e.iter_mut().zip(edge.a) {
-                        *value += a * ONE;
-                    }
-                }
-            });
-            let expected = if clipped[0] < clipped[2] && clipped[1] < clipped[3] {
-                brute_force(&edge, clipped)
-            } else {
-                Vec::new()
-            };
-            assert_eq!(spans, expected, "{screen:?} in {rect:?}");
-            checked += expected.len();
+            checked += assert_spans_are_the_covered_centres(&edge, rect, &screen);
         }
         assert!(
             checked > 100_000,
@@ -535,27 +546,7 @@ mod tests {
                 ((r >> 16) % 6) as i64 + 4,
                 ((r >> 24) % 7) as i64 + 3,
             ];
-            let clipped = [
-                edge.bbox[0].max(rect[0]),
-                edge.bbox[1].max(rect[1]),
-                edge.bbox[2].min(rect[2]),
-                edge.bbox[3].min(rect[3]),
-            ];
-            let mut spans = Vec::new();
-            edge.for_each_covered_span(rect, |y, (xs, xe), mut e| {
-                for x in xs..xe {
-                    spans.push((x, y, e));
-                    for (value, a) in e.iter_mut().zip(edge.a) {
-                        *value += a * ONE;
-                    }
-                }
-            });
-            let expected = if clipped[0] < clipped[2] && clipped[1] < clipped[3] {
-                brute_force(&edge, clipped)
-            } else {
-                Vec::new()
-            };
-            assert_eq!(spans, expected, "{screen:?} in {rect:?}");
+            assert_spans_are_the_covered_centres(&edge, rect, &screen);
             on_centre += usize::from(edge.ys.iter().any(|y| y.rem_euclid(ONE) == HALF));
         }
         assert!(

@@ -100,26 +100,33 @@ impl<V: Copy> PieceContext<V> {
         }
     }
 
-    /// The weights' derivatives along x and along y: zero-sum weights each.
+    /// What the weights' derivatives along both axes share: with perspective, `qᵢ = λᵢ/wᵢ`,
+    /// `D = Σq` and `D²`; `None` for affine interpolation.
     #[inline]
-    fn derivative_weights(&self, lambda: [f64; 3]) -> [[f64; 3]; 2] {
-        let g = |axis: usize| -> [f64; 3] { core::array::from_fn(|i| self.grads[i][axis]) };
+    fn divide_terms(&self, lambda: [f64; 3]) -> Option<([f64; 3], f64, f64)> {
         match self.interpolation {
-            Interpolation::Affine => [g(0), g(1)],
+            Interpolation::Affine => None,
             Interpolation::Perspective | Interpolation::AffineSpans { .. } => {
-                // (q′ᵢ·D − qᵢ·D′)/D² with qᵢ = λᵢ/wᵢ, D = Σq; q, D and D² are shared by both
-                // axes (the same operations, in the same order, as one axis at a time).
                 let q: [f64; 3] = core::array::from_fn(|i| lambda[i] * self.inv_w[i]);
                 let d = q.iter().sum::<f64>();
-                let d2 = d * d;
-                // A closure called twice, not `[0, 1].map(…)`: the array map is not inlined.
-                let along = |axis: usize| -> [f64; 3] {
-                    let g = g(axis);
-                    let qd: [f64; 3] = core::array::from_fn(|i| g[i] * self.inv_w[i]);
-                    let dd = qd.iter().sum::<f64>();
-                    core::array::from_fn(|i| (qd[i] * d - q[i] * dd) / d2)
-                };
-                [along(0), along(1)]
+                Some((q, d, d * d))
+            }
+        }
+    }
+
+    /// The weights' derivatives along `axis` (0 = x, 1 = y) from [`divide_terms`]: zero-sum
+    /// weights, `(q′ᵢ·D − qᵢ·D′)/D²` with perspective.
+    ///
+    /// [`divide_terms`]: Self::divide_terms
+    #[inline]
+    fn derivative_weights(&self, terms: Option<([f64; 3], f64, f64)>, axis: usize) -> [f64; 3] {
+        let g: [f64; 3] = core::array::from_fn(|i| self.grads[i][axis]);
+        match terms {
+            None => g,
+            Some((q, d, d2)) => {
+                let qd: [f64; 3] = core::array::from_fn(|i| g[i] * self.inv_w[i]);
+                let dd = qd.iter().sum::<f64>();
+                core::array::from_fn(|i| (qd[i] * d - q[i] * dd) / d2)
             }
         }
     }
@@ -163,15 +170,20 @@ impl<V: Interpolate> Fragment<'_, V> {
     /// ```
     #[must_use]
     pub fn ddx(&self) -> V {
-        let [w, _] = self.piece.derivative_weights(self.lambda);
-        V::combine3(self.piece.varyings, self.piece.input_weights(w))
+        self.along(0)
     }
 
     /// The varying's change per pixel down.
     #[must_use]
     pub fn ddy(&self) -> V {
-        let [_, w] = self.piece.derivative_weights(self.lambda);
-        V::combine3(self.piece.varyings, self.piece.input_weights(w))
+        self.along(1)
+    }
+
+    /// The derivative along one axis (0 = x, 1 = y).
+    fn along(&self, axis: usize) -> V {
+        let piece = self.piece;
+        let w = piece.derivative_weights(piece.divide_terms(self.lambda), axis);
+        V::combine3(piece.varyings, piece.input_weights(w))
     }
 
     /// `(ddx(), ddy())`, the same values, for about the price of one: the perspective divide's
@@ -207,11 +219,7 @@ impl<V: Interpolate> Fragment<'_, V> {
     #[must_use]
     #[inline]
     pub fn derivatives(&self) -> (V, V) {
-        let [wx, wy] = self.piece.derivative_weights(self.lambda);
-        (
-            V::combine3(self.piece.varyings, self.piece.input_weights(wx)),
-            V::combine3(self.piece.varyings, self.piece.input_weights(wy)),
-        )
+        self.derivatives_of(|v| *v)
     }
 
     /// [`derivatives`](Self::derivatives) of one part of the varying, `part(varying)`: the same
@@ -244,13 +252,15 @@ impl<V: Interpolate> Fragment<'_, V> {
     #[must_use]
     #[inline]
     pub fn derivatives_of<T: Interpolate>(&self, part: impl Fn(&V) -> T) -> (T, T) {
-        let [wx, wy] = self.piece.derivative_weights(self.lambda);
-        let v = &self.piece.varyings;
+        let piece = self.piece;
+        let terms = piece.divide_terms(self.lambda);
+        let v = &piece.varyings;
         let parts = [part(&v[0]), part(&v[1]), part(&v[2])];
-        (
-            T::combine3(parts, self.piece.input_weights(wx)),
-            T::combine3(parts, self.piece.input_weights(wy)),
-        )
+        let along = |axis| {
+            let w = piece.derivative_weights(terms, axis);
+            T::combine3(parts, piece.input_weights(w))
+        };
+        (along(0), along(1))
     }
 
     /// GPU-style x derivative: the difference with the other pixel of this pixel's 2×2 quad in

@@ -82,6 +82,24 @@ pub(crate) struct MaterialShader<'a> {
     pub(crate) interpolate_all: bool,
 }
 
+/// The output alpha under glTF's alpha mode (§3.9.4 "Alpha Coverage") for a base colour of
+/// alpha `alpha`: 1 when opaque or kept by the mask, the alpha when blended; `None` when the
+/// mask discards the fragment.
+fn coverage_alpha(mode: AlphaMode, alpha: f32) -> Option<f32> {
+    match mode {
+        AlphaMode::Opaque => Some(1.0),
+        // Discarded below the cutoff only: a NaN alpha is kept (not `alpha >= cutoff`).
+        AlphaMode::Mask { cutoff } => {
+            if alpha < cutoff {
+                None
+            } else {
+                Some(1.0)
+            }
+        }
+        AlphaMode::Blend => Some(alpha),
+    }
+}
+
 impl MaterialShader<'_> {
     /// The parts of the varying [`fragment`](Shader::fragment) reads for this material,
     /// primitive and shading frequency; only those are interpolated.
@@ -179,16 +197,7 @@ impl MaterialShader<'_> {
                 }
             }
         }
-        let alpha = match m.alpha_mode {
-            AlphaMode::Opaque => 1.0,
-            AlphaMode::Mask { cutoff } => {
-                if base.w < cutoff {
-                    return None;
-                }
-                1.0
-            }
-            AlphaMode::Blend => base.w,
-        };
+        let alpha = coverage_alpha(m.alpha_mode, base.w)?;
         Some(base.truncate().extend(alpha))
     }
 
@@ -281,16 +290,7 @@ impl Shader for MaterialShader<'_> {
         if let Some(t) = self.sample(m.base_texture, &point) {
             base *= t;
         }
-        let alpha = match m.alpha_mode {
-            AlphaMode::Opaque => 1.0,
-            AlphaMode::Mask { cutoff } => {
-                if base.w < cutoff {
-                    return None;
-                }
-                1.0
-            }
-            AlphaMode::Blend => base.w,
-        };
+        let alpha = coverage_alpha(m.alpha_mode, base.w)?;
         if !m.lit {
             return Some(self.fogged(base.truncate(), s.position).extend(alpha));
         }
