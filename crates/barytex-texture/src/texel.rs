@@ -71,6 +71,11 @@ pub trait Texel: Copy + Default + Send + Sync + core::fmt::Debug + 'static {
     /// The storage format.
     const FORMAT: TextureFormat;
 
+    /// Whether every texel decodes to finite components in [0, 1] (the 8-bit normalized
+    /// formats). Then a blend of premultiplied texels with non-negative weights divided by its
+    /// positive alpha is finite, and samplers leave out the finiteness test of un-premultiplying.
+    const UNIT_RANGE: bool = false;
+
     /// This texel as linear-light RGBA, straight alpha.
     #[must_use]
     fn to_linear(self) -> Vec4;
@@ -188,6 +193,7 @@ fn f32_to_unorm8(x: f32) -> u8 {
 
 impl Texel for Srgba8 {
     const FORMAT: TextureFormat = TextureFormat::Rgba8UnormSrgb;
+    const UNIT_RANGE: bool = true;
 
     // Always inlined: a trilinear lookup decodes eight texels, and a call each costs as much as
     // the decode (seen in the renderer's fragment loop, where the compiler declined to inline).
@@ -245,6 +251,7 @@ impl Srgba8 {
 
 impl Texel for Rgba8 {
     const FORMAT: TextureFormat = TextureFormat::Rgba8Unorm;
+    const UNIT_RANGE: bool = true;
 
     #[inline(always)]
     fn to_linear(self) -> Vec4 {
@@ -281,6 +288,7 @@ impl Texel for Rgba8 {
 
 impl Texel for R8 {
     const FORMAT: TextureFormat = TextureFormat::R8Unorm;
+    const UNIT_RANGE: bool = true;
 
     #[inline]
     fn to_linear(self) -> Vec4 {
@@ -295,6 +303,7 @@ impl Texel for R8 {
 
 impl Texel for Rg8 {
     const FORMAT: TextureFormat = TextureFormat::Rg8Unorm;
+    const UNIT_RANGE: bool = true;
 
     #[inline]
     fn to_linear(self) -> Vec4 {

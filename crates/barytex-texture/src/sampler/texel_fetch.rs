@@ -64,6 +64,28 @@ pub(crate) fn unpremultiply(c: Vec4) -> Vec4 {
     }
 }
 
+/// [`unpremultiply`] of one texel of format `T` or of a blend of them with non-negative weights:
+/// the same value, with less work where the format allows. For [`Texel::UNIT_RANGE`] formats the
+/// quotients are finite (every premultiplied component is at most its alpha, up to rounding), so
+/// their test is left out; for such a blend of opaque texels (`OPAQUE`: alpha exactly 1, which a
+/// lerp of ones keeps) the division by 1 is left out too.
+#[must_use]
+#[inline(always)]
+pub(crate) fn unpremultiply_texels<T: Texel, const OPAQUE: bool>(c: Vec4) -> Vec4 {
+    if !T::UNIT_RANGE {
+        return unpremultiply(c);
+    }
+    if OPAQUE {
+        return c;
+    }
+    if c.w > 0.0 {
+        let q = c / c.w;
+        Vec4::new(q.x, q.y, q.z, c.w)
+    } else {
+        Vec4::ZERO
+    }
+}
+
 /// Texel `(x, y)` of `texture` (indices before wrapping), premultiplied linear, or the border.
 #[must_use]
 #[inline]

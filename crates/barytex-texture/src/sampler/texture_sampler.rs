@@ -3,7 +3,7 @@
 
 use glam::{Vec2, Vec4};
 
-use crate::sampler::texel_fetch::{Addressing, premultiply, unpremultiply};
+use crate::sampler::texel_fetch::{Addressing, premultiply, unpremultiply, unpremultiply_texels};
 use crate::sampler::{
     AddressMode, AnisotropicFilter, FilterMode, MipmapFilterMode, Sampler, SamplerDescriptor,
     anisotropic, compare, ewa, level_filters, lod,
@@ -263,21 +263,20 @@ impl<T: Texel> TextureSampler<T> {
 
     #[inline(always)]
     fn sample_biased(&self, uv: Vec2, ddx: Vec2, ddy: Vec2, bias: f32) -> Vec4 {
-        if !uv.is_finite() {
-            return Vec4::ZERO;
-        }
         let levels = self.chain.levels();
         match self.path {
-            // Level 0 under the one filter whatever the footprint (see `across_levels`).
-            LookupPath::SingleLevelNearest => {
-                unpremultiply(nearest_inside_first(&levels[0], uv, &self.addressing))
-            }
-            LookupPath::SingleLevelBilinear => {
-                unpremultiply(level_filters::bilinear(&levels[0], uv, &self.addressing))
-            }
+            // Level 0 under the one filter whatever the footprint (see `across_levels`). Tested
+            // for non-finite coordinates only off its inside shortcut, which rejects them.
+            LookupPath::SingleLevelNearest => unpremultiply_texels::<T, false>(
+                nearest_inside_first(&levels[0], uv, &self.addressing),
+            ),
+            _ if !uv.is_finite() => Vec4::ZERO,
+            LookupPath::SingleLevelBilinear => unpremultiply_texels::<T, false>(
+                level_filters::bilinear(&levels[0], uv, &self.addressing),
+            ),
             LookupPath::Trilinear => {
                 let lod = self.clamp_lod(lod::lod(ddx, ddy, self.chain.base().size()) + bias);
-                unpremultiply(self.across_levels(lod, |level, _| {
+                unpremultiply_texels::<T, false>(self.across_levels(lod, |level, _| {
                     level_filters::bilinear(&levels[level], uv, &self.addressing)
                 }))
             }
@@ -306,10 +305,10 @@ impl<T: Texel> TextureSampler<T> {
         let (lo, hi, t) = linear_levels(lod, levels.len() - 1);
         let a = level_filters::bilinear_repeat_pow2::<T, OPAQUE>(&levels[lo], uv);
         if hi == lo {
-            return unpremultiply(a);
+            return unpremultiply_texels::<T, OPAQUE>(a);
         }
         let b = level_filters::bilinear_repeat_pow2::<T, OPAQUE>(&levels[hi], uv);
-        unpremultiply(a + (b - a) * t)
+        unpremultiply_texels::<T, OPAQUE>(a + (b - a) * t)
     }
 
     /// Every configuration: anisotropic probes or EWA, cubic, mixed filters.
@@ -462,12 +461,12 @@ impl<T: Texel> TextureSampler<T> {
     }
 }
 
-/// A non-negative, finite level number as an index clamped to `last`.
 /// [`level_filters::nearest`] with a shortcut for a coordinate inside the texture, the common
 /// case: there `⌊u·w⌋` is the truncation (`u·w ≥ 0`, exact in f64) and every address mode maps an
 /// inside index to itself, so the texel is read directly, without the general saturating floor
 /// and `wrap`. The same texel, so the same value (`tests/lookup_paths.rs` compares this path with
-/// the general one, which keeps `level_filters::nearest`).
+/// the general one, which keeps `level_filters::nearest`). Transparent black for a non-finite
+/// coordinate, as every lookup gives.
 #[inline(always)]
 fn nearest_inside_first<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing) -> Vec4 {
     let (w, h) = level.size();
@@ -478,6 +477,9 @@ fn nearest_inside_first<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing
     if x >= 0.0 && x < f64::from(w) && y >= 0.0 && y < f64::from(h) {
         let (i, j) = (x as u32 as usize, y as u32 as usize);
         return premultiply(level.texels()[j * w as usize + i].to_linear());
+    }
+    if !uv.is_finite() {
+        return Vec4::ZERO;
     }
     level_filters::nearest(level, uv, a)
 }
@@ -526,6 +528,7 @@ fn floor_f32(x: f32) -> f32 {
     }
 }
 
+/// A non-negative, finite level number as an index clamped to `last`.
 fn to_level(level: f32, last: usize) -> usize {
     if level >= last as f32 {
         last
