@@ -60,6 +60,8 @@ pub struct TextureSampler<T> {
     addressing: Addressing,
     /// The lookup resolved once, when sampler and texture meet.
     path: LookupPath,
+    /// How filtering at a given level of detail runs (each anisotropic probe, among others).
+    at_lod: AtLod,
 }
 
 /// Which lookup a sampler runs: the common configurations get a short path the compiler can
@@ -83,14 +85,8 @@ enum LookupPath {
 }
 
 impl LookupPath {
-    fn of<T: Texel>(d: &SamplerDescriptor, levels: &[Texture2d<T>]) -> Self {
+    fn of<T: Texel>(d: &SamplerDescriptor, levels: &[Texture2d<T>], at_lod: AtLod) -> Self {
         let filter = (d.mag_filter == d.min_filter).then_some(d.mag_filter);
-        let repeat_pow2 = d.address_mode_u == AddressMode::Repeat
-            && d.address_mode_v == AddressMode::Repeat
-            && levels.iter().all(|level| {
-                let (w, h) = level.size();
-                w.is_power_of_two() && h.is_power_of_two()
-            });
         match (
             filter,
             d.anisotropy_clamp <= 1,
@@ -99,13 +95,46 @@ impl LookupPath {
         ) {
             (Some(FilterMode::Nearest), true, true, _) => Self::SingleLevelNearest,
             (Some(FilterMode::Linear), true, true, _) => Self::SingleLevelBilinear,
-            (Some(FilterMode::Linear), true, false, MipmapFilterMode::Linear) if repeat_pow2 => {
-                Self::TrilinearRepeatPow2 {
-                    opaque: levels.iter().all(all_opaque),
-                }
-            }
-            (Some(FilterMode::Linear), true, false, MipmapFilterMode::Linear) => Self::Trilinear,
+            (Some(FilterMode::Linear), true, false, MipmapFilterMode::Linear) => match at_lod {
+                AtLod::RepeatPow2Trilinear { opaque } => Self::TrilinearRepeatPow2 { opaque },
+                AtLod::General => Self::Trilinear,
+            },
             _ => Self::General,
+        }
+    }
+}
+
+/// How a sampler filters at a given (biased, clamped) level of detail — what a trilinear
+/// lookup does once and an anisotropic one once a probe — resolved when sampler and texture
+/// meet. Both compute the same values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum AtLod {
+    /// [`TextureSampler::filter_premultiplied`]: every configuration.
+    General,
+    /// Bilinear within levels and linear between them under repeat addressing over levels whose
+    /// sides are all powers of two: the masked kernel
+    /// ([`level_filters::bilinear_repeat_pow2`]). `opaque`: every texel of every level is
+    /// opaque, so texels are not premultiplied (by 1).
+    RepeatPow2Trilinear { opaque: bool },
+}
+
+impl AtLod {
+    fn of<T: Texel>(d: &SamplerDescriptor, levels: &[Texture2d<T>]) -> Self {
+        let linear = d.mag_filter == FilterMode::Linear
+            && d.min_filter == FilterMode::Linear
+            && d.mipmap_filter == MipmapFilterMode::Linear;
+        let repeat_pow2 = d.address_mode_u == AddressMode::Repeat
+            && d.address_mode_v == AddressMode::Repeat
+            && levels.iter().all(|level| {
+                let (w, h) = level.size();
+                w.is_power_of_two() && h.is_power_of_two()
+            });
+        if linear && repeat_pow2 {
+            Self::RepeatPow2Trilinear {
+                opaque: levels.iter().all(all_opaque),
+            }
+        } else {
+            Self::General
         }
     }
 }
@@ -144,12 +173,14 @@ impl<T: Texel> TextureSampler<T> {
     pub fn new(chain: MipChain<T>, descriptor: SamplerDescriptor) -> Self {
         let d = descriptor.sanitized();
         let addressing = Addressing::new(d.address_mode_u, d.address_mode_v, d.border_color);
-        let path = LookupPath::of(&d, chain.levels());
+        let at_lod = AtLod::of(&d, chain.levels());
+        let path = LookupPath::of(&d, chain.levels(), at_lod);
         Self {
             chain,
             descriptor: d,
             addressing,
             path,
+            at_lod,
         }
     }
 
@@ -300,15 +331,33 @@ impl<T: Texel> TextureSampler<T> {
         ddy: Vec2,
         bias: f32,
     ) -> Vec4 {
-        let levels = self.chain.levels();
         let lod = self.clamp_lod(lod::lod(ddx, ddy, self.chain.base().size()) + bias);
+        unpremultiply_texels::<T, OPAQUE>(self.repeat_pow2_at::<OPAQUE>(uv, lod))
+    }
+
+    /// [`filter_premultiplied`](Self::filter_premultiplied) through the kernel
+    /// [`AtLod`] chose: the same values.
+    #[inline(always)]
+    fn at_lod_premultiplied(&self, uv: Vec2, lod: f32) -> Vec4 {
+        match self.at_lod {
+            AtLod::RepeatPow2Trilinear { opaque: true } => self.repeat_pow2_at::<true>(uv, lod),
+            AtLod::RepeatPow2Trilinear { opaque: false } => self.repeat_pow2_at::<false>(uv, lod),
+            AtLod::General => self.filter_premultiplied(uv, lod),
+        }
+    }
+
+    /// `across_levels` for [`AtLod::RepeatPow2Trilinear`] written out (below λ = 0 the linear
+    /// level choice gives level 0 alone, as magnification does): premultiplied.
+    #[inline(always)]
+    fn repeat_pow2_at<const OPAQUE: bool>(&self, uv: Vec2, lod: f32) -> Vec4 {
+        let levels = self.chain.levels();
         let (lo, hi, t) = linear_levels(lod, levels.len() - 1);
         let a = level_filters::bilinear_repeat_pow2::<T, OPAQUE>(&levels[lo], uv);
         if hi == lo {
-            return unpremultiply_texels::<T, OPAQUE>(a);
+            return a;
         }
         let b = level_filters::bilinear_repeat_pow2::<T, OPAQUE>(&levels[hi], uv);
-        unpremultiply_texels::<T, OPAQUE>(a + (b - a) * t)
+        a + (b - a) * t
     }
 
     /// Every configuration: anisotropic probes or EWA, cubic, mixed filters.
@@ -324,11 +373,11 @@ impl<T: Texel> TextureSampler<T> {
                         let plan = footprint.probes(max);
                         let lod = self.clamp_lod(plan.lod + bias);
                         if plan.count == 1 || !plan.spread {
-                            unpremultiply(self.filter_premultiplied(uv, lod))
+                            unpremultiply(self.at_lod_premultiplied(uv, lod))
                         } else {
                             let mut sum = Vec4::ZERO;
                             for i in 0..plan.count {
-                                sum += self.filter_premultiplied(uv + plan.offset(i), lod);
+                                sum += self.at_lod_premultiplied(uv + plan.offset(i), lod);
                             }
                             unpremultiply(sum / plan.count as f32)
                         }
@@ -342,7 +391,7 @@ impl<T: Texel> TextureSampler<T> {
             }
         }
         let lod = self.clamp_lod(lod::lod(ddx, ddy, self.chain.base().size()) + bias);
-        unpremultiply(self.filter_premultiplied(uv, lod))
+        unpremultiply(self.at_lod_premultiplied(uv, lod))
     }
 
     /// Mag/min/mip filtering at a (biased, clamped) level of detail; premultiplied result.
@@ -554,7 +603,51 @@ impl<T: Texel> Sampler for TextureSampler<T> {
 
 #[cfg(test)]
 mod tests {
-    use super::{floor_f32, linear_levels, to_level};
+    use glam::Vec2;
+    use proptest::prelude::*;
+
+    use super::{AtLod, TextureSampler, floor_f32, linear_levels, to_level};
+    use crate::sampler::{AddressMode, AnisotropicFilter, SamplerDescriptor};
+    use crate::{MipChain, MipOptions, Sampler, Srgba8, Texture2d};
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(128))]
+
+        /// The masked kernel that anisotropic probes (and the general path's plain trilinear
+        /// filtering) take under repeat addressing over power-of-two levels gives the general
+        /// filtering's bits, over translucent and over opaque textures, near and far away.
+        #[test]
+        fn probes_through_the_masked_kernel_equal_the_general_filtering(
+            log_w in 0_u32..7,
+            log_h in 0_u32..7,
+            seed in any::<u32>(),
+            opaque in any::<bool>(),
+            anisotropy in prop_oneof![Just(1_u16), Just(4), Just(16)],
+            uv in (-3.0e3_f32..3.0e3, -3.0_f32..3.0),
+            ddx in (-0.5_f32..0.5, -0.5_f32..0.5),
+            ddy in (-0.05_f32..0.05, -0.05_f32..0.05),
+            bias in -1.0_f32..3.0,
+        ) {
+            let (w, h) = (1 << log_w, 1 << log_h);
+            let base = Texture2d::from_fn(w, h, |x, y| {
+                let v = (x.wrapping_mul(2_654_435_761) ^ y.wrapping_mul(40_503) ^ seed).to_le_bytes();
+                Srgba8([v[0], v[1], v[2], if opaque { 255 } else { v[3] }])
+            }).expect("small");
+            let chain = MipChain::generate(base, &MipOptions::default()).expect("small");
+            let descriptor = SamplerDescriptor {
+                anisotropy_clamp: anisotropy,
+                anisotropic_filter: AnisotropicFilter::Probes,
+                lod_bias: bias,
+                ..SamplerDescriptor::trilinear().with_address_mode(AddressMode::Repeat)
+            };
+            let fast = TextureSampler::new(chain, descriptor);
+            prop_assert_eq!(fast.at_lod, AtLod::RepeatPow2Trilinear { opaque });
+            let general = TextureSampler { at_lod: AtLod::General, ..fast.clone() };
+            let (uv, ddx, ddy) = (Vec2::from(uv), Vec2::from(ddx), Vec2::from(ddy));
+            let bits = |s: &TextureSampler<Srgba8>| s.sample(uv, ddx, ddy).to_array().map(f32::to_bits);
+            prop_assert_eq!(bits(&fast), bits(&general));
+        }
+    }
 
     #[test]
     fn linear_levels_short_path_is_the_general_formula() {
