@@ -3,12 +3,40 @@
 single-threaded, timed beside `cargo bench -p barytex-benches --bench remap`, with its error
 against an exact f64 bilinear on the same coordinates.
 
-Run: pip install opencv-python-headless numpy && python3 tools/opencv_remap.py
-"""
-import time
+Run: python3 tools/opencv_remap.py
 
-import cv2
-import numpy as np
+On first use it creates a virtual environment with the pinned versions of
+tools/opencv/requirements.txt (OpenCV's headless wheel and numpy) under
+~/.cache/barytex/opencv-venv and re-runs itself there, so the OpenCV side is the same build on
+every machine.
+"""
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+VENV = Path.home() / ".cache" / "barytex" / "opencv-venv"
+
+
+def ensure_venv(venv):
+    """Re-executes this script under `venv`'s Python, creating the environment first if needed."""
+    python = venv / "bin" / "python"
+    if Path(sys.prefix).resolve() == venv.resolve():
+        return
+    if not python.exists():
+        print(f"creating {venv} (opencv-python-headless, numpy)", file=sys.stderr)
+        subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
+        subprocess.run([str(venv / "bin" / "pip"), "install", "--quiet", "-r",
+                        str(HERE / "opencv" / "requirements.txt")], check=True)
+    os.execv(str(python), [str(python), str(Path(__file__).resolve())] + sys.argv[1:])
+
+
+ensure_venv(VENV)
+
+import cv2  # noqa: E402  (after the environment is in place)
+import numpy as np  # noqa: E402
 
 SIDE = 2048
 
@@ -47,6 +75,7 @@ def exact_bilinear(img, mx, my):
 
 def main():
     cv2.setNumThreads(1)
+    print(f"OpenCV {cv2.__version__}, numpy {np.__version__}")
     img, (mx, my) = source(), warp()
     rows = slice(0, SIDE, 7)
     want = exact_bilinear(img, mx[rows], my[rows])
