@@ -34,6 +34,8 @@ pub(crate) struct EdgeSetup {
     bias: [i64; 3],
     /// Twice the area in fixed-point units (> 0).
     area2: i64,
+    /// `1 / area2`, computed once per triangle rather than once per tile it touches.
+    inv_area: f64,
     /// Pixel bounding box `[x0, x1) × [y0, y1)` (not clipped to any target).
     pub(crate) bbox: [i64; 4],
     /// The vertices' y in fixed point, input order (vertex `j` is opposite edge `j`).
@@ -61,13 +63,84 @@ pub(crate) fn fixed(v: f32) -> i64 {
     }
 }
 
+/// Which edges bound a triangle's runs on which side, by the signs of their `a`.
+#[derive(Clone, Copy)]
+struct Sides {
+    /// The edge alone on its side.
+    lone: u8,
+    lone_is_left: bool,
+    /// The two edges on the other side (the same edge twice when the third is horizontal).
+    pair: [u8; 2],
+    /// The horizontal edge, if any.
+    horizontal: Option<u8>,
+}
+
+/// [`Sides`] for each sign pattern `Σ 3ʲ·sⱼ` (`sⱼ`: 0 for `aⱼ < 0`, 1 for 0, 2 for `aⱼ > 0`).
+/// Patterns no triangle has (all one sign, two horizontal edges) get an arbitrary entry.
+const SIDES: [Sides; 27] = {
+    let mut table = [Sides {
+        lone: 0,
+        lone_is_left: true,
+        pair: [1, 2],
+        horizontal: None,
+    }; 27];
+    let mut pattern = 0;
+    while pattern < 27 {
+        let s = [pattern % 3, pattern / 3 % 3, pattern / 9];
+        let (mut left, mut right) = ([0_u8; 2], [0_u8; 2]);
+        let (mut nl, mut nr) = (0, 0);
+        let mut horizontal = None;
+        let mut i = 0;
+        while i < 3 {
+            match s[i] {
+                2 => {
+                    left[nl & 1] = i as u8;
+                    nl += 1;
+                }
+                0 => {
+                    right[nr & 1] = i as u8;
+                    nr += 1;
+                }
+                _ => horizontal = Some(i as u8),
+            }
+            i += 1;
+        }
+        table[pattern] = if nl == 2 {
+            Sides {
+                lone: right[0],
+                lone_is_left: false,
+                pair: left,
+                horizontal,
+            }
+        } else if nr == 2 {
+            Sides {
+                lone: left[0],
+                lone_is_left: true,
+                pair: right,
+                horizontal,
+            }
+        } else {
+            Sides {
+                lone: left[0],
+                lone_is_left: true,
+                pair: [right[0]; 2],
+                horizontal,
+            }
+        };
+        pattern += 1;
+    }
+    table
+};
+
 impl EdgeSetup {
     /// `None` for a zero-area triangle (after snapping) or coordinates beyond
     /// [`MAX_COORDINATE`].
-    #[inline]
+    ///
+    /// Without a branch on the winding or on the edges' directions: on arbitrary triangles each
+    /// is a coin toss for the branch predictor. (Always inlined: called, it read its argument
+    /// back with wide loads from the caller's narrow stores, which stalls store forwarding.)
+    #[inline(always)]
     pub(crate) fn new(screen: [Vec2; 3]) -> Option<Self> {
-        // Written out rather than with iterator adaptors and `map`: this runs once per triangle
-        // and the adaptors were not all inlined (cachegrind: ~450 instructions per triangle).
         let mut valid = true;
         for p in &screen {
             valid &= p.is_finite() & (p.x.abs() <= MAX_COORDINATE) & (p.y.abs() <= MAX_COORDINATE);
@@ -75,44 +148,39 @@ impl EdgeSetup {
         if !valid {
             return None;
         }
-        let mut v = [
+        let v = [
             (fixed(screen[0].x), fixed(screen[0].y)),
             (fixed(screen[1].x), fixed(screen[1].y)),
             (fixed(screen[2].x), fixed(screen[2].y)),
         ];
-        let mut area2 =
+        let signed_area2 =
             (v[1].0 - v[0].0) * (v[2].1 - v[0].1) - (v[1].1 - v[0].1) * (v[2].0 - v[0].0);
-        if area2 == 0 {
+        if signed_area2 == 0 {
             return None;
         }
-        let swapped = area2 < 0;
-        if swapped {
-            v.swap(1, 2);
-            area2 = -area2;
-        }
-        // Edge i opposite (wound) vertex i.
+        // Edge j, opposite input vertex j, runs from vertex j + 1 to j + 2: `E(r) = dx·(r.y −
+        // p.y) − dy·(r.x − p.x)` is positive inside for a positive area. For a negative one
+        // the triangle is wound the other way: its edge runs from j + 2 to j + 1, and that
+        // edge function is exactly `−E` (`a`, `b`, `c` negated: the same line, reversed).
+        // `flip` is 0 or −1: `(x ^ flip) − flip` negates where it is −1.
+        let flip = -i64::from(signed_area2 < 0);
+        let negate = |x: i64| (x ^ flip) - flip;
         let mut a = [0; 3];
         let mut b = [0; 3];
         let mut c = [0; 3];
         let mut bias = [0; 3];
-        let mut ys = [0; 3];
-        for i in 0..3 {
-            let (p, q) = (v[(i + 1) % 3], v[(i + 2) % 3]);
+        for j in 0..3 {
+            let (p, q) = (v[(j + 1) % 3], v[(j + 2) % 3]);
             let (dx, dy) = (q.0 - p.0, q.1 - p.1);
-            // E(r) = dx·(r.y − p.y) − dy·(r.x − p.x): positive on the inside for this winding.
-            let top_left = (dy == 0 && dx > 0) || dy < 0;
-            a[i] = -dy;
-            b[i] = dx;
-            c[i] = dy * p.0 - dx * p.1;
-            bias[i] = i64::from(!top_left);
-            ys[i] = v[i].1;
+            a[j] = negate(-dy);
+            b[j] = negate(dx);
+            c[j] = negate(dy * p.0 - dx * p.1);
+            // Top-left (`E = 0` covered): the edge runs up (`dy < 0` in its wound direction,
+            // `a > 0`), or it is horizontal and runs right (`b > 0`: the triangle below it).
+            let top_left = (a[j] > 0) | ((a[j] == 0) & (b[j] > 0));
+            bias[j] = i64::from(!top_left);
         }
-        // Stored under the input vertex each edge is opposite.
-        if swapped {
-            for s in [&mut a, &mut b, &mut c, &mut bias, &mut ys] {
-                s.swap(1, 2);
-            }
-        }
+        let area2 = negate(signed_area2);
         let (x_lo, x_hi) = (
             v[0].0.min(v[1].0).min(v[2].0),
             v[0].0.max(v[1].0).max(v[2].0),
@@ -131,8 +199,9 @@ impl EdgeSetup {
             c,
             bias,
             area2,
+            inv_area: 1.0 / area2 as f64,
             bbox: [first(x_lo), first(y_lo), last(x_hi), last(y_hi)],
-            ys,
+            ys: [v[0].1, v[1].1, v[2].1],
         })
     }
 
@@ -247,55 +316,47 @@ impl EdgeSetup {
         }
         let px = x0 * ONE + HALF;
         let value = |i: usize, y: i64| self.a[i] * px + self.b[i] * (y * ONE + HALF) + self.c[i];
-        // Edges by side: `s > 0` bounds the run on the left, `s < 0` on the right (the `a` of
-        // a triangle sum to zero: one or two on each side).
-        let (mut left, mut right) = ([0_usize; 2], [0_usize; 2]);
-        let (mut nl, mut nr) = (0, 0);
-        for i in 0..3 {
-            if self.a[i] > 0 {
-                left[nl & 1] = i;
-                nl += 1;
-            } else if self.a[i] < 0 {
-                right[nr & 1] = i;
-                nr += 1;
-            } else {
-                while y0 < y1 && value(i, y0) < self.bias[i] {
-                    y0 += 1;
-                }
-                while y1 > y0 && value(i, y1 - 1) < self.bias[i] {
-                    y1 -= 1;
-                }
+        // Edges by side: `a > 0` bounds the run on the left, `a < 0` on the right (the `a` of a
+        // triangle sum to zero: one or two on each side), `a = 0` is horizontal. Looked up from
+        // the three signs rather than branched on: on arbitrary triangles each sign is a coin
+        // toss for the branch predictor.
+        let sign = |i: usize| usize::from(self.a[i] > 0) + usize::from(self.a[i] >= 0);
+        let Sides {
+            lone,
+            lone_is_left,
+            pair,
+            horizontal,
+        } = SIDES[sign(0) + 3 * sign(1) + 9 * sign(2)];
+        if let Some(i) = horizontal {
+            // Rare: a horizontal edge bounds rows, not runs (only the box's first or last row
+            // can lie outside it).
+            let i = usize::from(i);
+            while y0 < y1 && value(i, y0) < self.bias[i] {
+                y0 += 1;
+            }
+            while y1 > y0 && value(i, y1 - 1) < self.bias[i] {
+                y1 -= 1;
+            }
+            if y0 >= y1 {
+                return;
             }
         }
-        if y0 >= y1 {
-            return;
-        }
-        // The lone edge on one side spans all rows; the other side's edges take the rows
-        // above `split` (`upper`) and from `split` on (`lower`); with one edge there, it is
-        // both.
-        let (lone, lone_is_left, pair) = if nl == 2 {
-            (right[0], false, left)
+        let (lone, pair) = (usize::from(lone), pair.map(usize::from));
+        // The lone edge on one side spans all rows; the other side's edges take the rows above
+        // `split` (`upper`) and from `split` on (`lower`); with one edge there, it is both.
+        // The middle vertex is opposite the lone edge; the upper edge of the pair joins it to
+        // the top vertex, so it is opposite the lower (larger y) of the other two.
+        let first_lower = self.ys[pair[0]] > self.ys[pair[1]];
+        let (upper, lower) = if first_lower {
+            (pair[0], pair[1])
         } else {
-            (left[0], true, if nr == 2 { right } else { [right[0]; 2] })
+            (pair[1], pair[0])
         };
-        let (upper, lower, split) = if pair[0] == pair[1] {
-            (pair[0], pair[0], y1)
-        } else {
-            // The middle vertex is opposite the lone edge; the upper edge of the pair joins it
-            // to the top vertex, so it is opposite the lower (larger y) of the other two.
-            let m = self.ys[lone];
-            let (upper, lower) = if self.ys[pair[0]] > self.ys[pair[1]] {
-                (pair[0], pair[1])
-            } else {
-                (pair[1], pair[0])
-            };
-            // The first row whose centre is at or below M. On M's own row both edges give the
-            // same run: both lines pass through M, and edges on the same side have the same
-            // bias (a left edge, `a > 0`, is a left edge of the top-left rule; a right one is
-            // not), so either may take it.
-            let split = (m - HALF + ONE - 1) >> SUBPIXEL_BITS;
-            (upper, lower, split.clamp(y0, y1))
-        };
+        // The first row whose centre is at or below M. On M's own row both edges give the same
+        // run: both lines pass through M, and edges on the same side have the same bias (a left
+        // edge, `a > 0`, is a left edge of the top-left rule; a right one is not), so either
+        // may take it. With one edge on that side (`upper = lower`) the split does not matter.
+        let split = ((self.ys[lone] - HALF + ONE - 1) >> SUBPIXEL_BITS).clamp(y0, y1);
         let mut e: [i64; 3] = core::array::from_fn(|i| value(i, y0));
         let step = self.a.map(|a| a * ONE);
         let down = self.b.map(|b| b * ONE);
@@ -346,7 +407,7 @@ impl EdgeSetup {
     /// `1 / area2`: edge values times it are barycentrics.
     #[inline]
     pub(crate) fn inv_area(&self) -> f64 {
-        1.0 / self.area2 as f64
+        self.inv_area
     }
 
     /// Whether edge values `e` (at one sample) are inside under the top-left rule.
