@@ -18,6 +18,18 @@ pub(crate) struct Piece<V> {
     pub(crate) context: PieceContext<V>,
 }
 
+impl<V> Piece<V> {
+    /// Asks the cache for the lines of the piece that rasterization reads first.
+    #[inline(always)]
+    pub(crate) fn prefetch(&self) {
+        #[cfg(target_arch = "x86_64")]
+        {
+            self.edge.prefetch();
+            safe_arch::prefetch_t0(&self.depth);
+        }
+    }
+}
+
 /// The pieces of the triangles `indices` over the vertex-stage outputs `shaded`, in submission
 /// order; what was dropped goes into `stats`.
 pub(crate) fn assemble<V: Copy>(

@@ -128,6 +128,10 @@ pub(crate) fn writable_rect<C: ColorFormat>(
     rect
 }
 
+/// How many pieces ahead a tile's loop asks for a piece's setup: each piece is a cache miss
+/// otherwise (the pieces are visited in tile order, not in the order they were built).
+const PREFETCH_AHEAD: usize = 4;
+
 /// A tile with work: its index and its slices of the colour and depth buffers.
 type TileJob<'a, C> = (usize, (&'a mut [<C as ColorFormat>::Sample], &'a mut [f32]));
 
@@ -250,7 +254,11 @@ pub fn draw<S: Shader, C: ColorFormat>(
             if tile_target.mask.is_some_and(|m| !m.contains(&true)) {
                 return stats;
             }
-            for &id in &bins[index] {
+            let bin = &bins[index];
+            for (k, &id) in bin.iter().enumerate() {
+                if let Some(&ahead) = bin.get(k + PREFETCH_AHEAD) {
+                    pieces[ahead as usize].prefetch();
+                }
                 shade_piece(
                     &pieces[id as usize],
                     shader,

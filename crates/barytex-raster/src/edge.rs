@@ -392,6 +392,17 @@ impl EdgeSetup {
         }
     }
 
+    /// Asks the cache for the setup's lines (x86-64 only).
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    pub(crate) fn prefetch(&self) {
+        safe_arch::prefetch_t0(&self.a);
+        safe_arch::prefetch_t0(&self.c);
+        safe_arch::prefetch_t0(&self.bias);
+        safe_arch::prefetch_t0(&self.bbox);
+        safe_arch::prefetch_t0(&self.ys);
+    }
+
     /// The change of the edge values per pixel to the right.
     #[inline]
     pub(crate) fn x_step(&self) -> [i64; 3] {
