@@ -53,33 +53,15 @@ pub(crate) fn assemble<V: Copy>(
             stats.dropped_non_finite += 1;
             continue;
         }
-        // Most triangles need no clipping: they skip the clipper's 9-vertex buffers.
-        let unclipped: [ClipVertex; 3];
-        let mut clipped_polygon: [ClipVertex; MAX_CLIPPED];
-        let whole = inside(&positions);
-        let polygon: &[ClipVertex] = if whole {
-            unclipped = [
-                ClipVertex {
-                    position: positions[0],
-                    bary: Vec3::X,
-                },
-                ClipVertex {
-                    position: positions[1],
-                    bary: Vec3::Y,
-                },
-                ClipVertex {
-                    position: positions[2],
-                    bary: Vec3::Z,
-                },
-            ];
-            &unclipped
-        } else {
-            stats.clipped += 1;
-            clipped_polygon = [ClipVertex::default(); MAX_CLIPPED];
-            let len = clip(&positions, &mut clipped_polygon);
-            &clipped_polygon[..len]
-        };
-        let len = polygon.len();
+        // Most triangles need no clipping: their own path, without the clipper's buffers.
+        if inside(&positions) {
+            whole_triangle(&positions, varyings, state, viewport, stats, &mut pieces);
+            continue;
+        }
+        stats.clipped += 1;
+        let mut clipped_polygon = [ClipVertex::default(); MAX_CLIPPED];
+        let len = clip(&positions, &mut clipped_polygon);
+        let polygon = &clipped_polygon[..len];
         if len < 3 {
             stats.clipped_away += 1;
             continue;
@@ -106,17 +88,7 @@ pub(crate) fn assemble<V: Copy>(
             stats.culled += 1;
             continue;
         }
-        let to_screen = |v: &ClipVertex, n: Vec3| {
-            (
-                Vec2::new(
-                    viewport.x + (n.x + 1.0) * 0.5 * viewport.width,
-                    viewport.y + (1.0 - n.y) * 0.5 * viewport.height,
-                ),
-                f64::from(viewport.min_depth)
-                    + f64::from(n.z) * f64::from(viewport.max_depth - viewport.min_depth),
-                1.0 / f64::from(v.position.w),
-            )
-        };
+        let to_screen = |v: &ClipVertex, n: Vec3| to_screen(viewport, v.position.w, n);
         let mut drawn = false;
         for k in 1..len - 1 {
             let s = [
@@ -138,7 +110,7 @@ pub(crate) fn assemble<V: Copy>(
                     varyings,
                     grads: [g0, g1, g2],
                     inv_w: [s[0].2, s[1].2, s[2].2],
-                    bary: (!whole && bary != [Vec3::X, Vec3::Y, Vec3::Z]).then_some(bary),
+                    bary: (bary != [Vec3::X, Vec3::Y, Vec3::Z]).then_some(bary),
                     interpolation: state.interpolation,
                 },
             });
@@ -148,4 +120,72 @@ pub(crate) fn assemble<V: Copy>(
         }
     }
     pieces
+}
+
+/// The screen position, depth and `1/w` of a vertex at NDC `n` with clip-space `w`.
+#[inline(always)]
+fn to_screen(viewport: Viewport, w: f32, n: Vec3) -> (Vec2, f64, f64) {
+    (
+        Vec2::new(
+            viewport.x + (n.x + 1.0) * 0.5 * viewport.width,
+            viewport.y + (1.0 - n.y) * 0.5 * viewport.height,
+        ),
+        f64::from(viewport.min_depth)
+            + f64::from(n.z) * f64::from(viewport.max_depth - viewport.min_depth),
+        1.0 / f64::from(w),
+    )
+}
+
+/// [`assemble`]'s work for a triangle inside every clip plane: the same operations as for a
+/// clipped polygon of three vertices (facing, culling, viewport, setup), without the polygon's
+/// buffers, its barycentric frame (the identity) or the fan loop: most triangles take this
+/// path, and copying them through the clipper's arrays was a good part of assembly.
+#[inline(always)]
+fn whole_triangle<V: Copy>(
+    positions: &[Vec4; 3],
+    varyings: [V; 3],
+    state: &PipelineState,
+    viewport: Viewport,
+    stats: &mut DrawStats,
+    pieces: &mut Vec<Piece<V>>,
+) {
+    // `xyz / w` lane by lane: each lane's division is the IEEE one of the scalar path.
+    let ndc = positions.map(|p| (p / Vec4::splat(p.w)).truncate());
+    // The cross products summed in polygon order, as for a clipped polygon.
+    let cross = |p: Vec3, q: Vec3| p.x * q.y - q.x * p.y;
+    let area: f32 = [
+        cross(ndc[0], ndc[1]),
+        cross(ndc[1], ndc[2]),
+        cross(ndc[2], ndc[0]),
+    ]
+    .into_iter()
+    .sum();
+    let ccw = area > 0.0;
+    let front = match state.front_face {
+        FrontFace::Ccw => ccw,
+        FrontFace::Cw => !ccw,
+    };
+    if (state.cull == CullMode::Back && !front) || (state.cull == CullMode::Front && front) {
+        stats.culled += 1;
+        return;
+    }
+    let s: [(Vec2, f64, f64); 3] =
+        core::array::from_fn(|i| to_screen(viewport, positions[i].w, ndc[i]));
+    let Some(edge) = EdgeSetup::new([s[0].0, s[1].0, s[2].0]) else {
+        stats.degenerate += 1;
+        return;
+    };
+    let (g0, g1, g2) = edge.gradients();
+    pieces.push(Piece {
+        edge,
+        depth: [s[0].1, s[1].1, s[2].1],
+        front,
+        context: PieceContext {
+            varyings,
+            grads: [g0, g1, g2],
+            inv_w: [s[0].2, s[1].2, s[2].2],
+            bary: None,
+            interpolation: state.interpolation,
+        },
+    });
 }
