@@ -29,6 +29,10 @@ pub(crate) fn planes(p: Vec4) -> [f32; 6] {
 }
 
 /// Whether the triangle needs no clipping.
+///
+/// Always inlined: called, it read the positions back from the caller's stack (4.6 % of a
+/// raster-only draw of small triangles).
+#[inline(always)]
 pub(crate) fn inside(tri: &[Vec4; 3]) -> bool {
     // Without short-circuits: the 21 comparisons are cheaper than as many branches.
     let mut all = true;

@@ -356,39 +356,53 @@ impl EdgeSetup {
         // run: both lines pass through M, and edges on the same side have the same bias (a left
         // edge, `a > 0`, is a left edge of the top-left rule; a right one is not), so either
         // may take it. With one edge on that side (`upper = lower`) the split does not matter.
-        let split = ((self.ys[lone] - HALF + ONE - 1) >> SUBPIXEL_BITS).clamp(y0, y1);
+        // (At or past the last row there is nothing to switch: never.)
+        let split = ((self.ys[lone] - HALF + ONE - 1) >> SUBPIXEL_BITS).max(y0);
+        let split = if split < y1 { split } else { i64::MAX };
         let mut e: [i64; 3] = core::array::from_fn(|i| value(i, y0));
         let step = self.a.map(|a| a * ONE);
         let down = self.b.map(|b| b * ONE);
         let n = x1 - x0;
         let bound =
             |e: &[i64; 3], i: usize| RunBound::new(e[i] - self.bias[i], step[i].abs(), down[i]);
-        let mut lone_bound = bound(&e, lone);
-        let mut y = y0;
-        for (edge, end) in [(upper, split), (lower, y1)] {
-            if y >= end {
-                continue;
+        let lone_bound = bound(&e, lone);
+        let pair_bound = bound(&e, if split == y0 { lower } else { upper });
+        let (mut l, mut r) = if lone_is_left {
+            (lone_bound, pair_bound)
+        } else {
+            (pair_bound, lone_bound)
+        };
+        // The run of a row: its offsets in the box and the edge values at its first pixel.
+        let run = |l: &RunBound, r: &RunBound, e: &[i64; 3]| {
+            let lo = l.first().max(0);
+            let hi = r.end().min(n);
+            let at: [i64; 3] = core::array::from_fn(|i| e[i] + step[i] * lo);
+            (lo, hi, at)
+        };
+        let mut current = run(&l, &r, &e);
+        for y in y0..y1 {
+            // The next row's run is found before this row's pixels are visited: the end of a
+            // short run's pixel loop is often mispredicted, and what was computed before the
+            // branch survives it, so the next row starts with its bounds in hand.
+            for i in 0..3 {
+                e[i] += down[i];
             }
-            let (mut l, mut r) = if lone_is_left {
-                (lone_bound, bound(&e, edge))
-            } else {
-                (bound(&e, edge), lone_bound)
-            };
-            while y < end {
-                let lo = l.first().max(0);
-                let hi = r.end().min(n);
-                if lo < hi {
-                    let at: [i64; 3] = core::array::from_fn(|i| e[i] + step[i] * lo);
-                    span(y, (x0 + lo, x0 + hi), at);
+            l.advance();
+            r.advance();
+            if y + 1 == split {
+                // The pair's side passes the middle vertex: its lower edge bounds from here.
+                if lone_is_left {
+                    r = bound(&e, lower);
+                } else {
+                    l = bound(&e, lower);
                 }
-                for i in 0..3 {
-                    e[i] += down[i];
-                }
-                l.advance();
-                r.advance();
-                y += 1;
             }
-            lone_bound = if lone_is_left { l } else { r };
+            let next = run(&l, &r, &e);
+            let (lo, hi, at) = current;
+            if lo < hi {
+                span(y, (x0 + lo, x0 + hi), at);
+            }
+            current = next;
         }
     }
 
