@@ -19,6 +19,33 @@ pub(crate) struct Piece<V> {
 }
 
 impl<V> Piece<V> {
+    /// The piece of the screen triangle `s` (each vertex's position, depth and `1/w`, from
+    /// [`to_screen`]) with its setup `edge`; `bary` is its vertices' weights over the input
+    /// triangle's, `None` for the input triangle itself.
+    #[inline(always)]
+    fn new(
+        edge: EdgeSetup,
+        s: [(Vec2, f64, f64); 3],
+        front: bool,
+        varyings: [V; 3],
+        bary: Option<[Vec3; 3]>,
+        state: &PipelineState,
+    ) -> Self {
+        let (g0, g1, g2) = edge.gradients();
+        Piece {
+            edge,
+            depth: [s[0].1, s[1].1, s[2].1],
+            front,
+            context: PieceContext {
+                varyings,
+                grads: [g0, g1, g2],
+                inv_w: [s[0].2, s[1].2, s[2].2],
+                bary,
+                interpolation: state.interpolation,
+            },
+        }
+    }
+
     /// Asks the cache for the lines of the piece that rasterization reads first.
     #[inline(always)]
     pub(crate) fn prefetch(&self) {
@@ -79,15 +106,10 @@ pub(crate) fn assemble<V: Copy>(
                 p.x * q.y - q.x * p.y
             })
             .sum();
-        let ccw = area > 0.0;
-        let front = match state.front_face {
-            FrontFace::Ccw => ccw,
-            FrontFace::Cw => !ccw,
-        };
-        if (state.cull == CullMode::Back && !front) || (state.cull == CullMode::Front && front) {
+        let Some(front) = facing(state, area) else {
             stats.culled += 1;
             continue;
-        }
+        };
         let to_screen = |v: &ClipVertex, n: Vec3| to_screen(viewport, v.position.w, n);
         let mut drawn = false;
         for k in 1..len - 1 {
@@ -100,20 +122,9 @@ pub(crate) fn assemble<V: Copy>(
                 continue;
             };
             drawn = true;
-            let (g0, g1, g2) = edge.gradients();
             let bary = [polygon[0].bary, polygon[k].bary, polygon[k + 1].bary];
-            pieces.push(Piece {
-                edge,
-                depth: [s[0].1, s[1].1, s[2].1],
-                front,
-                context: PieceContext {
-                    varyings,
-                    grads: [g0, g1, g2],
-                    inv_w: [s[0].2, s[1].2, s[2].2],
-                    bary: (bary != [Vec3::X, Vec3::Y, Vec3::Z]).then_some(bary),
-                    interpolation: state.interpolation,
-                },
-            });
+            let bary = (bary != [Vec3::X, Vec3::Y, Vec3::Z]).then_some(bary);
+            pieces.push(Piece::new(edge, s, front, varyings, bary, state));
         }
         if !drawn {
             stats.degenerate += 1;
@@ -160,32 +171,30 @@ fn whole_triangle<V: Copy>(
     ]
     .into_iter()
     .sum();
-    let ccw = area > 0.0;
-    let front = match state.front_face {
-        FrontFace::Ccw => ccw,
-        FrontFace::Cw => !ccw,
-    };
-    if (state.cull == CullMode::Back && !front) || (state.cull == CullMode::Front && front) {
+    let Some(front) = facing(state, area) else {
         stats.culled += 1;
         return;
-    }
+    };
     let s: [(Vec2, f64, f64); 3] =
         core::array::from_fn(|i| to_screen(viewport, positions[i].w, ndc[i]));
     let Some(edge) = EdgeSetup::new([s[0].0, s[1].0, s[2].0]) else {
         stats.degenerate += 1;
         return;
     };
-    let (g0, g1, g2) = edge.gradients();
-    pieces.push(Piece {
-        edge,
-        depth: [s[0].1, s[1].1, s[2].1],
-        front,
-        context: PieceContext {
-            varyings,
-            grads: [g0, g1, g2],
-            inv_w: [s[0].2, s[1].2, s[2].2],
-            bary: None,
-            interpolation: state.interpolation,
-        },
-    });
+    pieces.push(Piece::new(edge, s, front, varyings, None, state));
+}
+
+/// Whether a polygon whose NDC area (y up, summed in polygon order) is `area` faces the front,
+/// or `None` when `state` culls it.
+#[inline(always)]
+fn facing(state: &PipelineState, area: f32) -> Option<bool> {
+    // Positive is counter-clockwise.
+    let ccw = area > 0.0;
+    let front = match state.front_face {
+        FrontFace::Ccw => ccw,
+        FrontFace::Cw => !ccw,
+    };
+    let culled =
+        (state.cull == CullMode::Back && !front) || (state.cull == CullMode::Front && front);
+    (!culled).then_some(front)
 }
