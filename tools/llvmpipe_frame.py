@@ -51,6 +51,8 @@ import tempfile
 import time
 from pathlib import Path
 
+from pinned_venv import ensure_venv
+
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 CONFORMANCE = HERE / "conformance"
@@ -59,23 +61,6 @@ DEFAULT_SCENES = ["Avocado", "Suzanne"]
 BACKGROUND_SRGB8 = (118, 118, 124)  # barytex's default background, #76767c, given explicitly
 SUPPORTED_REQUIRED = {"KHR_texture_transform", "KHR_materials_unlit"}
 MAX_IMAGE_SIDE = 8192
-
-
-# ---------------------------------------------------------------------------------------------
-# Virtual environment
-
-
-def ensure_venv(venv):
-    """Re-executes this script under `venv`'s Python, creating the environment first if needed."""
-    python = venv / "bin" / "python"
-    if Path(sys.prefix).resolve() == venv.resolve():
-        return
-    if not python.exists():
-        print(f"creating {venv} (moderngl, numpy, Pillow)", file=sys.stderr)
-        subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
-        subprocess.run([str(venv / "bin" / "pip"), "install", "--quiet", "-r",
-                        str(CONFORMANCE / "requirements.txt")], check=True)
-    os.execv(str(python), [str(python), str(Path(__file__).resolve())] + sys.argv[1:])
 
 
 # ---------------------------------------------------------------------------------------------
@@ -397,7 +382,8 @@ def main():
     ap.add_argument("--max-mib", type=int, default=256, help="largest model file or buffer (default %(default)s)")
     ap.add_argument("--venv", default=str(VENV), help="the virtual environment (default %(default)s)")
     args = ap.parse_args()
-    ensure_venv(Path(args.venv))
+    ensure_venv(args.venv, __file__, ["-r", str(CONFORMANCE / "requirements.txt")],
+                "moderngl, numpy, Pillow")
     if args.worker:
         return worker(args.worker)
 

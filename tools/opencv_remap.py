@@ -10,30 +10,17 @@ tools/opencv/requirements.txt (OpenCV's headless wheel and numpy) under
 ~/.cache/barytex/opencv-venv and re-runs itself there, so the OpenCV side is the same build on
 every machine.
 """
-import os
-import subprocess
-import sys
 import time
 from pathlib import Path
+
+from pinned_venv import ensure_venv
 
 HERE = Path(__file__).resolve().parent
 VENV = Path.home() / ".cache" / "barytex" / "opencv-venv"
 
 
-def ensure_venv(venv):
-    """Re-executes this script under `venv`'s Python, creating the environment first if needed."""
-    python = venv / "bin" / "python"
-    if Path(sys.prefix).resolve() == venv.resolve():
-        return
-    if not python.exists():
-        print(f"creating {venv} (opencv-python-headless, numpy)", file=sys.stderr)
-        subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
-        subprocess.run([str(venv / "bin" / "pip"), "install", "--quiet", "-r",
-                        str(HERE / "opencv" / "requirements.txt")], check=True)
-    os.execv(str(python), [str(python), str(Path(__file__).resolve())] + sys.argv[1:])
-
-
-ensure_venv(VENV)
+ensure_venv(VENV, __file__, ["-r", str(HERE / "opencv" / "requirements.txt")],
+            "opencv-python-headless, numpy")
 
 import cv2  # noqa: E402  (after the environment is in place)
 import numpy as np  # noqa: E402

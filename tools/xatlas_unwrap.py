@@ -27,22 +27,11 @@ import sys
 import tempfile
 import time
 
+from pinned_venv import ensure_venv
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 VENV = os.path.join(ROOT, "target", "xatlas-venv")
-PY = os.path.join(VENV, "bin", "python")
 METHODS = ["lscm-arap", "lscm", "mean-value", "pairs", "per-triangle"]
-
-
-def ensure_venv():
-    """Re-runs this script inside its own venv (created with xatlas 0.0.11 if missing)."""
-    if os.path.realpath(sys.prefix) == os.path.realpath(VENV):
-        return
-    if not os.path.exists(PY):
-        subprocess.check_call([sys.executable, "-m", "venv", VENV])
-        subprocess.check_call(
-            [PY, "-m", "pip", "install", "-q", "xatlas==0.0.11", "trimesh", "numpy"]
-        )
-    os.execv(PY, [PY] + sys.argv)
 
 
 def meshes():
@@ -185,7 +174,7 @@ def pareto_svg(rows, path):
 
 
 def main():
-    ensure_venv()
+    ensure_venv(VENV, __file__, ["xatlas==0.0.11", "trimesh", "numpy"], "xatlas, trimesh, numpy")
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--size", type=int, default=1024)
     parser.add_argument("--padding", type=int, default=4)
