@@ -5,10 +5,10 @@
 //! Validation covers the whole document, used or not, wherever the check is cheap and the rule
 //! is the specification's; decoding covers only what the chosen scene uses.
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeSet;
 use std::sync::Arc;
 
-use barytex_texture::load::{AnyTexture2d, ColorSpace};
+use barytex_texture::load::ColorSpace;
 use glam::{Mat4, Vec3};
 use serde_json::Value;
 
@@ -16,7 +16,8 @@ use crate::accessor::{AccessorDef, Reader, ViewDef};
 use crate::animation::{AnimationContext, KeyframeChecks};
 use crate::buffer::{self, BufferDef, Source};
 use crate::camera::{DocumentCamera, Projection, SceneCamera};
-use crate::image::{ImageDef, ImageSource};
+use crate::image::ImageDef;
+use crate::image_decode::{self, WantedImages};
 use crate::json::{Obj, as_obj, child};
 use crate::light::{PunctualLight, SceneLight};
 use crate::material::Material;
@@ -24,9 +25,8 @@ use crate::mesh::{Mesh, MeshContext, MeshDef};
 use crate::node::{NodeDef, NodeRefs, check_forest};
 use crate::portal_def::PortalKind;
 use crate::sampler::SamplerParams;
-use crate::scene::{MeshInstance, Scene, SceneImage, SceneStats, Texture};
+use crate::scene::{MeshInstance, Scene, SceneStats, Texture};
 use crate::skin::SkinDef;
-use crate::uri::Uri;
 use crate::{LoadOptions, SceneError, UriResolver, glb};
 
 /// Extensions this loader implements (and so may appear in `extensionsRequired`).
@@ -77,24 +77,6 @@ pub(crate) fn load(
     crate::json::check_no_empty_arrays(root.value(), "", 0)?;
     let source = Source { files, bin, is_glb };
     Document::parse(root, source, options, &mut warnings)?.into_scene(source, options, warnings)
-}
-
-/// Where an image's encoded bytes come from, to decode each source once.
-#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-enum ImageKey<'a> {
-    View(usize),
-    Data(&'a [u8]),
-    /// A relative URI (its text: two spellings of one file are two sources) or an unfetched
-    /// absolute one.
-    Uri(&'a str),
-}
-
-fn image_key(def: &ImageDef) -> ImageKey<'_> {
-    match &def.source {
-        ImageSource::View(v) => ImageKey::View(*v),
-        ImageSource::Uri(Uri::Data { bytes, .. }) => ImageKey::Data(bytes),
-        ImageSource::Uri(Uri::Relative(u) | Uri::NonRelative(u)) => ImageKey::Uri(u),
-    }
 }
 
 /// Every object of the document, parsed and cross-checked.
@@ -710,7 +692,6 @@ impl Document {
             instances.push(instance);
         }
 
-        let mut decode_seconds = 0.0;
         // Images: decoded only where a used material samples them in a role the caller reads.
         // Images sampled only in other roles are checked, and an error there is a warning.
         let mut wanted: BTreeSet<(usize, bool)> = BTreeSet::new();
@@ -730,100 +711,15 @@ impl Document {
                 }
             }
         }
-        let mut images = Vec::with_capacity(self.images.len());
-        // Decoded textures by (source, sRGB?): entries sharing a source share its texture, and
-        // only distinct decodes count against `max_total_image_bytes`.
-        let mut decoded_images: BTreeMap<(ImageKey<'_>, bool), Arc<AnyTexture2d>> = BTreeMap::new();
-        let mut image_bytes = 0u64;
-        for (i, def) in self.images.iter().enumerate() {
-            let mut slot = SceneImage {
-                name: def.name.clone(),
-                ..SceneImage::default()
-            };
-            let wants_srgb = wanted.contains(&(i, true));
-            let wants_linear = wanted.contains(&(i, false));
-            let checked = def.bytes(&reader, source, limits).and_then(|bytes| {
-                match &bytes {
-                    Some(b) => def.check_bytes(b),
-                    None => Ok(None),
-                }
-                .map(|warning| (bytes, warning))
-            });
-            let bytes = match checked {
-                Ok((bytes, warning)) => {
-                    warnings.extend(warning);
-                    bytes
-                }
-                // Sampled only in roles the caller does not read: not needed. (An image no
-                // material samples stays required, as the glTF-Validator requires it.)
-                Err(e) if !(wants_srgb || wants_linear) && unread.contains(&i) => {
-                    warnings.push(format!(
-                        "{}: image not usable, and not needed: {e}",
-                        def.ptr
-                    ));
-                    stats.images_skipped += 1;
-                    images.push(slot);
-                    continue;
-                }
-                Err(e) => return Err(e),
-            };
-            let Some(bytes) = bytes else {
-                warnings.push(format!("{}: non-relative image URI not fetched", def.ptr));
-                stats.images_skipped += 1;
-                images.push(slot);
-                continue;
-            };
-            if !(wants_srgb || wants_linear) || !options.decode_images {
-                stats.images_skipped += 1;
-            }
-            if options.decode_images {
-                let decoding = std::time::Instant::now();
-                for (wants, space) in [
-                    (wants_srgb, ColorSpace::Srgb),
-                    (wants_linear, ColorSpace::Linear),
-                ] {
-                    if !wants {
-                        continue;
-                    }
-                    let key = (image_key(def), space == ColorSpace::Srgb);
-                    let texture = match decoded_images.get(&key) {
-                        Some(shared) => Arc::clone(shared),
-                        None => {
-                            // From the header, before anything is decoded: this image's
-                            // own limits (as `decode` checks them), then the budget.
-                            let image_error =
-                                |e: barytex_texture::TextureError| SceneError::Image {
-                                    pointer: def.ptr.clone(),
-                                    reason: e.to_string(),
-                                };
-                            let (width, height, need) =
-                                barytex_texture::load::decoded_size(&bytes, space)
-                                    .map_err(image_error)?;
-                            limits.image.check(width, height, 16).map_err(image_error)?;
-                            image_bytes = image_bytes.saturating_add(need);
-                            if image_bytes > limits.max_total_image_bytes {
-                                return Err(SceneError::TooLarge {
-                                    pointer: def.ptr.clone(),
-                                    what: "total decoded image bytes",
-                                    requested: image_bytes,
-                                    limit: limits.max_total_image_bytes,
-                                });
-                            }
-                            let texture = Arc::new(def.decode(&bytes, space, limits)?);
-                            stats.images_decoded += 1;
-                            decoded_images.insert(key, Arc::clone(&texture));
-                            texture
-                        }
-                    };
-                    match space {
-                        ColorSpace::Srgb => slot.srgb = Some(texture),
-                        ColorSpace::Linear => slot.linear = Some(texture),
-                    }
-                }
-                decode_seconds += decoding.elapsed().as_secs_f64();
-            }
-            images.push(slot);
-        }
+        let decoded_images = image_decode::decode_images(
+            &self.images,
+            &reader,
+            source,
+            options,
+            &WantedImages { wanted, unread },
+            &mut warnings,
+            &mut stats,
+        )?;
 
         Ok(Scene {
             scene_index,
@@ -839,10 +735,10 @@ impl Document {
             lights,
             materials: self.materials,
             textures: self.textures,
-            images,
+            images: decoded_images.images,
             warnings,
             stats,
-            decode_seconds,
+            decode_seconds: decoded_images.seconds,
             environment: None,
             portals,
         })

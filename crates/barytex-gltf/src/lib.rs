@@ -58,6 +58,7 @@ mod error;
 mod extensions;
 mod glb;
 mod image;
+mod image_decode;
 mod json;
 pub mod light;
 mod limits;
@@ -121,6 +122,11 @@ pub struct LoadOptions {
     /// textures folder beside the model's). Empty by default: a document reads only files under
     /// its own folder. A root that does not exist allows nothing.
     pub allowed_roots: Vec<PathBuf>,
+    /// How many threads decode images (the calling thread and scoped helpers, each decoding
+    /// one image at a time; 0: as many as the machine has). 1 by default: the caller decides
+    /// whether a load may use more cores. The scene is the same for any count, errors
+    /// included; each image decoding at once holds its own temporary buffers.
+    pub decode_threads: usize,
 }
 
 impl Default for LoadOptions {
@@ -131,6 +137,7 @@ impl Default for LoadOptions {
             decode_images: true,
             image_roles: TextureRoles::ALL,
             allowed_roots: Vec::new(),
+            decode_threads: 1,
         }
     }
 }

@@ -215,7 +215,8 @@ pub(crate) fn parse_fog(text: &str) -> Result<f32, String> {
         .ok_or_else(|| format!("fog `{text}`: expected a density ≥ 0 (per unit of distance)"))
 }
 
-fn load(options: &Options) -> Result<(Scene, f64), Box<dyn std::error::Error>> {
+/// Loads the file (its images decoded on `threads` threads) or builds the demo.
+fn load(options: &Options, threads: usize) -> Result<(Scene, f64), String> {
     let started = Instant::now();
     let scene = match &options.file {
         None if options.demo_mirror => barytex_render::demo::demo_scene_with_mirror(),
@@ -227,6 +228,7 @@ fn load(options: &Options) -> Result<(Scene, f64), Box<dyn std::error::Error>> {
                 allowed_roots: options.allowed_roots.clone(),
                 // Decode (and require) only the textures this shading reads.
                 image_roles: options.render.shading.texture_roles(),
+                decode_threads: threads,
                 ..LoadOptions::default()
             },
         )
@@ -433,15 +435,16 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         .num_threads(options.threads.unwrap_or(0))
         .build()?;
     if options.list_cameras {
-        let (scene, _) = load(options)?;
+        let (scene, _) = load(options, pool.current_num_threads())?;
         print!("{}", list_cameras(&what(options), &scene));
         return Ok(());
     }
     let progress = Progress::start();
     progress.stage("loading");
     // Loaded, and the camera checked, before the render is announced: a missing or invalid file
-    // or a camera the scene lacks is one error line.
-    let (scene, load_seconds) = load(options)?;
+    // or a camera the scene lacks is one error line. Images decode on as many threads as the
+    // render runs on.
+    let (scene, load_seconds) = load(options, pool.current_num_threads())?;
     barytex_render::choose_camera(&scene, &options.render)?;
     progress.suspend(|| {
         println!(
