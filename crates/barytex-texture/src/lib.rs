@@ -63,6 +63,8 @@ pub mod load;
 pub mod mip_chain;
 pub mod mip_generation;
 #[cfg(feature = "image")]
+mod png_direct;
+#[cfg(feature = "image")]
 mod png_palette;
 pub mod procedural;
 pub mod reference;

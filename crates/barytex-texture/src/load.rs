@@ -140,6 +140,9 @@ pub fn load_from_memory(
         .map_err(|e| TextureError::Decode(e.to_string()))?;
     // The largest decoded form is RGBA32F: check that, so every conversion below fits.
     limits.check(width, height, 16)?;
+    if let Some(texture) = direct_png(bytes, color_space, limits) {
+        return texture;
+    }
     let mut decoder = reader()?;
     let mut image_limits = image::Limits::default();
     image_limits.max_image_width = Some(limits.max_width);
@@ -150,6 +153,26 @@ pub fn load_from_memory(
         .decode()
         .map_err(|e| TextureError::Decode(e.to_string()))?;
     convert(image, color_space)
+}
+
+/// An 8-bit RGB or RGBA PNG decoded row by row into its texels (see `png_direct`); `None` for
+/// the files that path does not take.
+fn direct_png(
+    bytes: &[u8],
+    color_space: ColorSpace,
+    limits: &Limits,
+) -> Option<Result<AnyTexture2d, TextureError>> {
+    let unlimited = &Limits::UNLIMITED;
+    Some(match color_space {
+        ColorSpace::Srgb => {
+            let (w, h, texels) = crate::png_direct::decode_rgba8(bytes, limits, Srgba8)?;
+            Texture2d::from_texels_with_limits(w, h, texels, unlimited).map(AnyTexture2d::Srgba8)
+        }
+        ColorSpace::Linear => {
+            let (w, h, texels) = crate::png_direct::decode_rgba8(bytes, limits, Rgba8)?;
+            Texture2d::from_texels_with_limits(w, h, texels, unlimited).map(AnyTexture2d::Rgba8)
+        }
+    })
 }
 
 /// `(width, height, bytes)` of the texture [`load_from_memory`] returns for `bytes`, read from

@@ -1,6 +1,7 @@
 //! Every 8-bit PNG layout loads into the texels the `image` crate's own RGBA conversion gives
-//! (grey expanded, alpha 255 where the file has none), in both colour spaces: the RGB path that
-//! skips the intermediate RGBA image among them.
+//! (grey expanded, alpha 255 where the file has none), in both colour spaces — the 8-bit RGB and
+//! RGBA PNGs decoded row by row straight into texels among them — and the files that path
+//! leaves to the `image` crate (a `tRNS` colour key, a broken file) load or fail as there.
 #![cfg(feature = "image")]
 
 use barytex_texture::Limits;
@@ -79,5 +80,57 @@ fn every_8_bit_layout_loads_as_the_image_crates_rgba() {
                 layout.color()
             );
         }
+    }
+}
+
+/// An 8-bit RGB PNG of `w × h` noise texels, with a `tRNS` colour key when `key` is given.
+fn rgb_png(w: u32, h: u32, key: Option<[u8; 3]>) -> Vec<u8> {
+    let mut bytes = Vec::new();
+    let mut encoder = png::Encoder::new(&mut bytes, w, h);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.set_depth(png::BitDepth::Eight);
+    if let Some([r, g, b]) = key {
+        // 16-bit samples in the chunk, as PNG §11.3.2.1 stores them.
+        encoder.set_trns(vec![0, r, 0, g, 0, b]);
+    }
+    let mut writer = encoder.write_header().expect("header");
+    let mut data = noise((3 * w * h) as usize, 7);
+    if let Some(key) = key {
+        // A few texels take the key's colour.
+        for k in (0..data.len() / 3).step_by(5) {
+            data[3 * k..3 * k + 3].copy_from_slice(&key);
+        }
+    }
+    writer.write_image_data(&data).expect("data");
+    writer.finish().expect("finishes");
+    bytes
+}
+
+#[test]
+fn an_rgb_colour_key_becomes_alpha_as_in_the_image_crate() {
+    let bytes = rgb_png(19, 11, Some([10, 20, 30]));
+    let expected = image::load_from_memory(&bytes)
+        .expect("decodes")
+        .into_rgba8()
+        .into_raw();
+    assert!(
+        expected.chunks_exact(4).any(|t| t[3] == 0),
+        "the key made some texels transparent"
+    );
+    let texture = load_from_memory(&bytes, ColorSpace::Srgb, &Limits::default()).expect("loads");
+    assert_eq!(rgba_bytes(&texture), expected);
+}
+
+#[test]
+fn a_broken_rgb_png_fails_with_the_image_crates_message() {
+    let bytes = rgb_png(64, 64, None);
+    // Cut inside the pixel data: the header is whole, the rows are not.
+    let cut = &bytes[..bytes.len() / 2];
+    let expected = image::load_from_memory(cut)
+        .expect_err("truncated")
+        .to_string();
+    match load_from_memory(cut, ColorSpace::Srgb, &Limits::default()) {
+        Err(barytex_texture::TextureError::Decode(message)) => assert_eq!(message, expected),
+        other => panic!("expected a decoding error, got {other:?}"),
     }
 }
