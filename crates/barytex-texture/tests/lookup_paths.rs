@@ -141,6 +141,63 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// An axis clamped to the edge (any side) beside one that repeats over power-of-two sides
+    /// or is clamped too takes a trilinear path that clamps or masks indices: coordinates far
+    /// outside the texture on both sides, texel-aligned ones, translucent and opaque texels.
+    #[test]
+    fn edge_clamped_paths_equal_the_general_path(
+        w in 1_u32..50,
+        log_h in 0_u32..7,
+        seed in any::<u64>(),
+        u in -3.0e3_f32..3.0e3,
+        v in -3.0_f32..3.0,
+        scale in prop_oneof![Just(1.0_f32), Just(1e-3), Just(1e6), Just(1e30)],
+        ddx in (-0.5_f32..0.5, -0.5_f32..0.5),
+        ddy in (-0.5_f32..0.5, -0.5_f32..0.5),
+        opaque in any::<bool>(),
+        both_clamped in any::<bool>(),
+    ) {
+        // u clamped over any width; v repeating over a power of two, or clamped as well.
+        let h = 1 << log_h;
+        let mut base = texture(w, h, seed);
+        if opaque {
+            for t in base.texels_mut() {
+                t.0[3] = 255;
+            }
+        }
+        let chain = MipChain::generate(base, &MipOptions::default()).expect("small");
+        let v_mode = if both_clamped { AddressMode::ClampToEdge } else { AddressMode::Repeat };
+        let (ddx, ddy) = (Vec2::from(ddx), Vec2::from(ddy));
+        let uv = Vec2::new(u * scale, v);
+        let aligned = Vec2::new(
+            (uv.x * 4.0).round() / (4 * w) as f32,
+            (uv.y * 4.0).round() / (4 * h) as f32,
+        );
+        for (mode_u, mode_v) in [(AddressMode::ClampToEdge, v_mode), (v_mode, AddressMode::ClampToEdge)] {
+            let trilinear = SamplerDescriptor {
+                address_mode_u: mode_u,
+                address_mode_v: mode_v,
+                ..SamplerDescriptor::trilinear()
+            };
+            let clamped = SamplerDescriptor { lod_min_clamp: 0.5, lod_max_clamp: 2.25, ..trilinear };
+            for descriptor in [trilinear, clamped] {
+                let sampler = TextureSampler::new(chain.clone(), descriptor);
+                let lod = sampler.lod(ddx, ddy, 0.0);
+                for uv in [uv, aligned, Vec2::new(uv.y, uv.x)] {
+                    prop_assert_eq!(
+                        bits(sampler.sample(uv, ddx, ddy)),
+                        bits(sampler.sample_level(uv, lod)),
+                        "{:?} at {:?}, lod {}", descriptor, uv, lod
+                    );
+                }
+            }
+        }
+    }
+}
+
 /// Opaque float texels that are NaN or infinite: the path that skips premultiplying (by 1)
 /// still turns a non-finite colour into black, as the general path does.
 #[test]

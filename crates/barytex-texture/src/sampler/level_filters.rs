@@ -38,35 +38,36 @@ pub(crate) fn bilinear<T: Texel>(level: &Texture2d<T>, uv: Vec2, a: &Addressing)
     top + (bottom - top) * ty.frac
 }
 
-/// [`bilinear`] for a level whose sides are powers of two under [`AddressMode::Repeat`] on both
-/// axes, the configuration most textures are sampled with: there [`wrap`] is `i & (size − 1)` for
-/// every index, inside or not (its power-of-two branch; an inside index keeps its low bits), so the
-/// in-range test and the address-mode dispatch go and the four texel reads need no border case.
-/// The same indices and weights in the same order, so the same value (bit for bit;
-/// `tests/lookup_paths.rs` compares the two).
+/// [`bilinear`] with each axis's address mode resolved when sampler and texture meet: under
+/// [`AddressMode::Repeat`] over a power-of-two side (`CLAMP_*` false) [`wrap`] is `i & (size − 1)`
+/// for every index, inside or not (its power-of-two branch; an inside index keeps its low
+/// bits); under [`AddressMode::ClampToEdge`] (`CLAMP_*` true) it is `i.clamp(0, size − 1)` for
+/// every index (an inside index is its own clamp). Repeat on both axes is the configuration
+/// most textures are sampled with, clamp-to-edge the other one glTF samplers name, and
+/// environment maps repeat across and clamp down. The in-range test and the address-mode
+/// dispatch go and the four texel reads need no border case. The same indices and weights in
+/// the same order, so the same value (bit for bit; `tests/lookup_paths.rs` compares the two).
 ///
 /// [`AddressMode::Repeat`]: crate::sampler::AddressMode::Repeat
+/// [`AddressMode::ClampToEdge`]: crate::sampler::AddressMode::ClampToEdge
 ///
 /// `OPAQUE`: every texel of the level is opaque ([`Texel::is_opaque`]), so premultiplying
 /// (a product by exactly 1) is skipped; the same result, bit for bit.
 #[must_use]
 #[inline(always)]
-pub(crate) fn bilinear_repeat_pow2<T: Texel, const OPAQUE: bool>(
+pub(crate) fn bilinear_resolved<
+    T: Texel,
+    const OPAQUE: bool,
+    const CLAMP_U: bool,
+    const CLAMP_V: bool,
+>(
     level: &Texture2d<T>,
     uv: Vec2,
 ) -> Vec4 {
     let (w, h) = level.size();
     let (tx, ty) = linear_taps_pair(uv, w, h);
-    let (mx, my) = (i64::from(w) - 1, i64::from(h) - 1);
-    // Saturating as in `bilinear`: a saturated index's neighbour is itself.
-    let (x0, x1) = (
-        (tx.i0 & mx) as usize,
-        (tx.i0.saturating_add(1) & mx) as usize,
-    );
-    let (y0, y1) = (
-        (ty.i0 & my) as usize,
-        (ty.i0.saturating_add(1) & my) as usize,
-    );
+    let (x0, x1) = resolved_pair::<CLAMP_U>(tx.i0, w);
+    let (y0, y1) = resolved_pair::<CLAMP_V>(ty.i0, h);
     let (texels, stride) = (level.texels(), w as usize);
     let (row0, row1) = (
         &texels[y0 * stride..][..stride],
@@ -86,6 +87,20 @@ pub(crate) fn bilinear_repeat_pow2<T: Texel, const OPAQUE: bool>(
     let top = c00 + (c10 - c00) * tx.frac;
     let bottom = c01 + (c11 - c01) * tx.frac;
     top + (bottom - top) * ty.frac
+}
+
+/// The addresses of taps `i0` and `i0 + 1` on an axis of `size` texels (≥ 1): clamped to the
+/// edge, or masked (repeat over a power-of-two side). Saturating as in `bilinear`: a saturated
+/// index's neighbour is itself.
+#[inline(always)]
+fn resolved_pair<const CLAMP: bool>(i0: i64, size: u32) -> (usize, usize) {
+    let last = i64::from(size) - 1;
+    let i1 = i0.saturating_add(1);
+    if CLAMP {
+        (i0.clamp(0, last) as usize, i1.clamp(0, last) as usize)
+    } else {
+        ((i0 & last) as usize, (i1 & last) as usize)
+    }
 }
 
 /// [`linear_taps`] on both axes at once. On x86-64 the common case — both `u·w − ½` and

@@ -80,6 +80,9 @@ enum LookupPath {
     /// sides are all powers of two: the address mode resolved at construction (a mask per axis).
     /// `opaque`: every texel of every level is opaque, so texels are not premultiplied (by 1).
     TrilinearRepeatPow2 { opaque: bool },
+    /// [`Trilinear`](Self::Trilinear) through any other [`AtLod::ResolvedTrilinear`] kernel (an
+    /// axis clamped to the edge).
+    TrilinearResolved { opaque: bool },
     /// Anything else.
     General,
 }
@@ -96,7 +99,11 @@ impl LookupPath {
             (Some(FilterMode::Nearest), true, true, _) => Self::SingleLevelNearest,
             (Some(FilterMode::Linear), true, true, _) => Self::SingleLevelBilinear,
             (Some(FilterMode::Linear), true, false, MipmapFilterMode::Linear) => match at_lod {
-                AtLod::RepeatPow2Trilinear { opaque } => Self::TrilinearRepeatPow2 { opaque },
+                AtLod::ResolvedTrilinear {
+                    opaque,
+                    clamp: [false, false],
+                } => Self::TrilinearRepeatPow2 { opaque },
+                AtLod::ResolvedTrilinear { opaque, .. } => Self::TrilinearResolved { opaque },
                 AtLod::General => Self::Trilinear,
             },
             _ => Self::General,
@@ -111,11 +118,11 @@ impl LookupPath {
 enum AtLod {
     /// [`TextureSampler::filter_premultiplied`]: every configuration.
     General,
-    /// Bilinear within levels and linear between them under repeat addressing over levels whose
-    /// sides are all powers of two: the masked kernel
-    /// ([`level_filters::bilinear_repeat_pow2`]). `opaque`: every texel of every level is
-    /// opaque, so texels are not premultiplied (by 1).
-    RepeatPow2Trilinear { opaque: bool },
+    /// Bilinear within levels and linear between them with each axis's address mode resolved
+    /// ([`level_filters::bilinear_resolved`]): `clamp[axis]` false for repeat over levels whose
+    /// sides along it are all powers of two (a mask), true for clamp-to-edge (a clamp).
+    /// `opaque`: every texel of every level is opaque, so texels are not premultiplied (by 1).
+    ResolvedTrilinear { opaque: bool, clamp: [bool; 2] },
 }
 
 impl AtLod {
@@ -123,18 +130,20 @@ impl AtLod {
         let linear = d.mag_filter == FilterMode::Linear
             && d.min_filter == FilterMode::Linear
             && d.mipmap_filter == MipmapFilterMode::Linear;
-        let repeat_pow2 = d.address_mode_u == AddressMode::Repeat
-            && d.address_mode_v == AddressMode::Repeat
-            && levels.iter().all(|level| {
-                let (w, h) = level.size();
-                w.is_power_of_two() && h.is_power_of_two()
-            });
-        if linear && repeat_pow2 {
-            Self::RepeatPow2Trilinear {
+        // Per axis: `Some(clamp)` where the kernel resolves its address mode.
+        let axis = |mode: AddressMode, side: fn(&Texture2d<T>) -> u32| match mode {
+            AddressMode::ClampToEdge => Some(true),
+            AddressMode::Repeat if levels.iter().all(|l| side(l).is_power_of_two()) => Some(false),
+            _ => None,
+        };
+        let u = axis(d.address_mode_u, |l| l.size().0);
+        let v = axis(d.address_mode_v, |l| l.size().1);
+        match (linear, u, v) {
+            (true, Some(clamp_u), Some(clamp_v)) => Self::ResolvedTrilinear {
                 opaque: levels.iter().all(all_opaque),
-            }
-        } else {
-            Self::General
+                clamp: [clamp_u, clamp_v],
+            },
+            _ => Self::General,
         }
     }
 }
@@ -317,6 +326,15 @@ impl<T: Texel> TextureSampler<T> {
             LookupPath::TrilinearRepeatPow2 { opaque: false } => {
                 self.trilinear_repeat_pow2::<false>(uv, ddx, ddy, bias)
             }
+            LookupPath::TrilinearResolved { opaque } => {
+                let lod = self.clamp_lod(lod::lod(ddx, ddy, self.chain.base().size()) + bias);
+                let c = self.at_lod_premultiplied(uv, lod);
+                if opaque {
+                    unpremultiply_texels::<T, true>(c)
+                } else {
+                    unpremultiply_texels::<T, false>(c)
+                }
+            }
             LookupPath::General => self.sample_general(uv, ddx, ddy, bias),
         }
     }
@@ -332,31 +350,44 @@ impl<T: Texel> TextureSampler<T> {
         bias: f32,
     ) -> Vec4 {
         let lod = self.clamp_lod(lod::lod(ddx, ddy, self.chain.base().size()) + bias);
-        unpremultiply_texels::<T, OPAQUE>(self.repeat_pow2_at::<OPAQUE>(uv, lod))
+        unpremultiply_texels::<T, OPAQUE>(self.resolved_at::<OPAQUE, false, false>(uv, lod))
     }
 
     /// [`filter_premultiplied`](Self::filter_premultiplied) through the kernel
     /// [`AtLod`] chose: the same values.
     #[inline(always)]
     fn at_lod_premultiplied(&self, uv: Vec2, lod: f32) -> Vec4 {
-        match self.at_lod {
-            AtLod::RepeatPow2Trilinear { opaque: true } => self.repeat_pow2_at::<true>(uv, lod),
-            AtLod::RepeatPow2Trilinear { opaque: false } => self.repeat_pow2_at::<false>(uv, lod),
-            AtLod::General => self.filter_premultiplied(uv, lod),
+        let AtLod::ResolvedTrilinear { opaque, clamp } = self.at_lod else {
+            return self.filter_premultiplied(uv, lod);
+        };
+        match (opaque, clamp) {
+            (true, [false, false]) => self.resolved_at::<true, false, false>(uv, lod),
+            (true, [false, true]) => self.resolved_at::<true, false, true>(uv, lod),
+            (true, [true, false]) => self.resolved_at::<true, true, false>(uv, lod),
+            (true, [true, true]) => self.resolved_at::<true, true, true>(uv, lod),
+            (false, [false, false]) => self.resolved_at::<false, false, false>(uv, lod),
+            (false, [false, true]) => self.resolved_at::<false, false, true>(uv, lod),
+            (false, [true, false]) => self.resolved_at::<false, true, false>(uv, lod),
+            (false, [true, true]) => self.resolved_at::<false, true, true>(uv, lod),
         }
     }
 
-    /// `across_levels` for [`AtLod::RepeatPow2Trilinear`] written out (below λ = 0 the linear
+    /// `across_levels` for [`AtLod::ResolvedTrilinear`] written out (below λ = 0 the linear
     /// level choice gives level 0 alone, as magnification does): premultiplied.
     #[inline(always)]
-    fn repeat_pow2_at<const OPAQUE: bool>(&self, uv: Vec2, lod: f32) -> Vec4 {
+    fn resolved_at<const OPAQUE: bool, const CLAMP_U: bool, const CLAMP_V: bool>(
+        &self,
+        uv: Vec2,
+        lod: f32,
+    ) -> Vec4 {
         let levels = self.chain.levels();
         let (lo, hi, t) = linear_levels(lod, levels.len() - 1);
-        let a = level_filters::bilinear_repeat_pow2::<T, OPAQUE>(&levels[lo], uv);
+        let kernel = level_filters::bilinear_resolved::<T, OPAQUE, CLAMP_U, CLAMP_V>;
+        let a = kernel(&levels[lo], uv);
         if hi == lo {
             return a;
         }
-        let b = level_filters::bilinear_repeat_pow2::<T, OPAQUE>(&levels[hi], uv);
+        let b = kernel(&levels[hi], uv);
         a + (b - a) * t
     }
 
@@ -613,13 +644,17 @@ mod tests {
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(128))]
 
-        /// The masked kernel that anisotropic probes (and the general path's plain trilinear
-        /// filtering) take under repeat addressing over power-of-two levels gives the general
-        /// filtering's bits, over translucent and over opaque textures, near and far away.
+        /// The resolved kernels that anisotropic probes (and the general path's plain
+        /// trilinear filtering) take — each axis repeating over power-of-two levels or clamped
+        /// to the edge over levels of any size — give the general filtering's bits, over
+        /// translucent and over opaque textures, near and far away; a repeating axis whose
+        /// sides are not powers of two keeps the general filtering.
         #[test]
-        fn probes_through_the_masked_kernel_equal_the_general_filtering(
-            log_w in 0_u32..7,
-            log_h in 0_u32..7,
+        fn probes_through_the_resolved_kernels_equal_the_general_filtering(
+            w in 1_u32..70,
+            h in 1_u32..70,
+            clamp_u in any::<bool>(),
+            clamp_v in any::<bool>(),
             seed in any::<u32>(),
             opaque in any::<bool>(),
             anisotropy in prop_oneof![Just(1_u16), Just(4), Just(16)],
@@ -628,20 +663,31 @@ mod tests {
             ddy in (-0.05_f32..0.05, -0.05_f32..0.05),
             bias in -1.0_f32..3.0,
         ) {
-            let (w, h) = (1 << log_w, 1 << log_h);
+            // Repeating axes mostly over powers of two (random sides rarely are).
+            let side = |n: u32, clamp: bool| if clamp || n.is_multiple_of(4) { n } else { n.next_power_of_two() };
+            let (w, h) = (side(w, clamp_u), side(h, clamp_v));
             let base = Texture2d::from_fn(w, h, |x, y| {
                 let v = (x.wrapping_mul(2_654_435_761) ^ y.wrapping_mul(40_503) ^ seed).to_le_bytes();
                 Srgba8([v[0], v[1], v[2], if opaque { 255 } else { v[3] }])
             }).expect("small");
             let chain = MipChain::generate(base, &MipOptions::default()).expect("small");
+            let mode = |clamp: bool| if clamp { AddressMode::ClampToEdge } else { AddressMode::Repeat };
             let descriptor = SamplerDescriptor {
                 anisotropy_clamp: anisotropy,
                 anisotropic_filter: AnisotropicFilter::Probes,
                 lod_bias: bias,
-                ..SamplerDescriptor::trilinear().with_address_mode(AddressMode::Repeat)
+                address_mode_u: mode(clamp_u),
+                address_mode_v: mode(clamp_v),
+                ..SamplerDescriptor::trilinear()
             };
             let fast = TextureSampler::new(chain, descriptor);
-            prop_assert_eq!(fast.at_lod, AtLod::RepeatPow2Trilinear { opaque });
+            let resolved = (clamp_u || w.is_power_of_two()) && (clamp_v || h.is_power_of_two());
+            let expected = if resolved {
+                AtLod::ResolvedTrilinear { opaque, clamp: [clamp_u, clamp_v] }
+            } else {
+                AtLod::General
+            };
+            prop_assert_eq!(fast.at_lod, expected);
             let general = TextureSampler { at_lod: AtLod::General, ..fast.clone() };
             let (uv, ddx, ddy) = (Vec2::from(uv), Vec2::from(ddx), Vec2::from(ddy));
             let bits = |s: &TextureSampler<Srgba8>| s.sample(uv, ddx, ddy).to_array().map(f32::to_bits);
