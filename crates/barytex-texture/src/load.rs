@@ -246,9 +246,9 @@ fn convert(image: DynamicImage, color_space: ColorSpace) -> Result<AnyTexture2d,
             let texels = gray.into_raw().into_iter().map(R8).collect();
             AnyTexture2d::R8(Texture2d::from_texels_with_limits(w, h, texels, unlimited)?)
         }
-        // RGB, the most common layout of colour textures, straight to 4-byte texels: one pass
-        // over the decoded rows instead of two (`into_rgba8` builds a whole RGBA image first,
-        // which took 11–13 ms of a 2048² image's 38 ms load).
+        // RGB (JPEGs, and the PNGs `png_direct` leaves here: interlaced ones) straight to
+        // 4-byte texels: one pass over the decoded image instead of two (`into_rgba8` builds a
+        // whole RGBA image first, which took 11–13 ms of a 2048² image's 38 ms load).
         DynamicImage::ImageRgb8(rgb) => {
             let raw = rgb.into_raw();
             let opaque = |c: &[u8]| [c[0], c[1], c[2], u8::MAX];
