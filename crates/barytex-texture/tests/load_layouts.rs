@@ -134,3 +134,65 @@ fn a_broken_rgb_png_fails_with_the_image_crates_message() {
         other => panic!("expected a decoding error, got {other:?}"),
     }
 }
+
+/// CRC-32 (ISO 3309, as PNG chunks use), bit by bit.
+fn crc32(bytes: &[u8]) -> u32 {
+    let mut crc = !0_u32;
+    for &b in bytes {
+        crc ^= u32::from(b);
+        for _ in 0..8 {
+            crc = if crc & 1 == 1 {
+                (crc >> 1) ^ 0xEDB8_8320
+            } else {
+                crc >> 1
+            };
+        }
+    }
+    !crc
+}
+
+/// Pixel data corrupted where the checks before decoding cannot see it (bytes of the IDAT
+/// chunk changed, its CRC recomputed): the row-by-row path and the `image` crate agree on every
+/// file — the same texels, or both refuse it (with the same message, since a failing row hands
+/// the file to the `image` crate).
+#[test]
+fn corrupted_pixel_data_loads_or_fails_as_in_the_image_crate() {
+    let clean = rgb_png(23, 17, None);
+    // The IDAT chunk: its length, then "IDAT", its data and the CRC.
+    let at = clean
+        .windows(4)
+        .position(|w| w == b"IDAT")
+        .expect("an IDAT chunk")
+        - 4;
+    let length = u32::from_be_bytes(clean[at..at + 4].try_into().expect("4 bytes")) as usize;
+    let data = at + 8..at + 8 + length;
+    let mut state = 0x2545_f491_u32;
+    let mut outcomes = [0_usize; 2];
+    for _ in 0..400 {
+        let mut bytes = clean.clone();
+        for _ in 0..1 + state % 3 {
+            state ^= state << 13;
+            state ^= state >> 17;
+            state ^= state << 5;
+            let i = data.start + state as usize % length;
+            bytes[i] ^= (state >> 24) as u8 | 1;
+        }
+        let crc = crc32(&bytes[at + 4..data.end]).to_be_bytes();
+        bytes[data.end..data.end + 4].copy_from_slice(&crc);
+        let expected = image::load_from_memory(&bytes).map(|i| i.into_rgba8().into_raw());
+        let got = load_from_memory(&bytes, ColorSpace::Srgb, &Limits::default());
+        match (got, expected) {
+            (Ok(texture), Ok(texels)) => {
+                outcomes[0] += 1;
+                assert_eq!(rgba_bytes(&texture), texels);
+            }
+            (Err(barytex_texture::TextureError::Decode(m)), Err(e)) => {
+                outcomes[1] += 1;
+                assert_eq!(m, e.to_string());
+            }
+            (got, expected) => panic!("barytex {got:?}, image {:?}", expected.map(|_| ())),
+        }
+    }
+    // Both outcomes occur: the comparison covers decodable and undecodable corruptions.
+    assert!(outcomes[0] > 0 && outcomes[1] > 0, "{outcomes:?}");
+}
