@@ -180,21 +180,15 @@ impl MaterialShader<'_> {
             && let Some(texture) = self.textures.get(slot.texture)
         {
             // Sets other than 0 and 1 do not exist: the general path's mapping gives `None`.
-            let set: Option<fn(&Surface) -> Vec2> = match slot.mapping.set {
-                0 => Some(|v| v.uv0),
-                1 => Some(|v| v.uv1),
+            // A closure per set rather than a function pointer: inlined, not three indirect
+            // calls a fragment.
+            let sample = match slot.mapping.set {
+                0 => Some(uv_sample(f, |v| v.uv0)),
+                1 => Some(uv_sample(f, |v| v.uv1)),
                 _ => None,
             };
-            if let Some(set) = set {
-                let (duvdx, duvdy) = f.derivatives_of(set);
-                let sample = UvSample {
-                    uv: set(s),
-                    duvdx,
-                    duvdy,
-                };
-                if let Some(mapped) = slot.mapping.transform_sample(&sample) {
-                    base *= texture.sample_uv(&mapped);
-                }
+            if let Some(mapped) = sample.and_then(|s| slot.mapping.transform_sample(&s)) {
+                base *= texture.sample_uv(&mapped);
             }
         }
         let alpha = coverage_alpha(m.alpha_mode, base.w)?;
@@ -207,6 +201,17 @@ impl MaterialShader<'_> {
         let slot = slot?;
         let texture = self.textures.get(slot.texture)?;
         Some(texture.sample_uv(&slot.mapping.map(point)?))
+    }
+}
+
+/// One uv set of a fragment's surface, `set(surface)`, with its screen derivatives.
+#[inline(always)]
+fn uv_sample(f: &Fragment<'_, Surface>, set: impl Fn(&Surface) -> Vec2) -> UvSample {
+    let (duvdx, duvdy) = f.derivatives_of(&set);
+    UvSample {
+        uv: set(&f.varying),
+        duvdx,
+        duvdy,
     }
 }
 

@@ -294,10 +294,16 @@ impl<T: Texel> TextureSampler<T> {
     fn clamp_lod(&self, lod: f32) -> f32 {
         let d = &self.descriptor;
         let biased = lod + d.lod_bias;
+        // `f32::clamp` written out: the same comparisons, without its `min ≤ max` assertion
+        // (sanitising guarantees it), which kept it out of line — a call per lookup.
         if biased.is_nan() {
             d.lod_max_clamp
+        } else if biased < d.lod_min_clamp {
+            d.lod_min_clamp
+        } else if biased > d.lod_max_clamp {
+            d.lod_max_clamp
         } else {
-            biased.clamp(d.lod_min_clamp, d.lod_max_clamp)
+            biased
         }
     }
 
