@@ -9,6 +9,7 @@ use crate::draw::DrawStats;
 use crate::format::ColorFormat;
 use crate::run_depth::for_each_run_pixel;
 use crate::samples::SamplePattern;
+use crate::shader::PieceContext;
 use crate::state::{Blend, DepthCompare, Interpolation, PipelineState};
 use crate::target::{TILE, premultiply};
 use crate::{Fragment, Shader};
@@ -147,6 +148,43 @@ fn shade_centres<S: Shader, C: ColorFormat, const OVER: bool, const MASKED: bool
     let depth = &mut *tile.depth;
     // Fragments shaded = pixels visited − masked − failed (one counter per pixel less).
     let (mut visited, mut skipped, mut discarded, mut failed) = (0_u64, 0_u64, 0_u64, 0_u64);
+    // A covered centre not masked out, at pixel `(x, y)` with weights `λ` and depth `z`.
+    let mut pixel =
+        |color: &mut C::Sample, stored: &mut f32, xy, lambda, z| match shade_pixel::<S, C, OVER>(
+            shader,
+            context,
+            front_facing,
+            (color, stored),
+            xy,
+            (lambda, z),
+            (&passes, &store),
+        ) {
+            Outcome::Failed => failed += 1,
+            Outcome::Discarded => discarded += 1,
+            Outcome::Written => {}
+        };
+    #[cfg(target_arch = "x86_64")]
+    if let Some(small) = piece.edge.small_box(tile.rect) {
+        // A narrow box: its covered centres from bit masks, without the spans' setup and loops.
+        small.for_each_covered(
+            inv_area,
+            depths,
+            #[inline(always)]
+            |x, y, lambda, z| {
+                let index = ((y - oy) * i64::from(TILE) + (x - ox)) as usize;
+                visited += 1;
+                if MASKED && mask.is_some_and(|keep| !keep[index]) {
+                    skipped += 1;
+                    return;
+                }
+                pixel(&mut color[index], &mut depth[index], (x, y), lambda, z);
+            },
+        );
+        stats.fragments_shaded += visited - skipped - failed;
+        stats.fragments_discarded += discarded;
+        stats.fragments_depth_failed += failed;
+        return;
+    }
     let step = piece.edge.x_step();
     let area2 = piece.edge.area2();
     piece
@@ -165,38 +203,58 @@ fn shade_centres<S: Shader, C: ColorFormat, const OVER: bool, const MASKED: bool
                     skipped += 1;
                     return;
                 }
-                let stored = &mut depth[k];
-                if !passes(z, *stored) {
-                    failed += 1;
-                    return;
-                }
-                let weights = context.weights(lambda);
-                let fragment = Fragment {
-                    varying: S::Varying::combine3(context.varyings, context.input_weights(weights)),
-                    depth: z,
-                    pixel: UVec2::new((xs + k as i64) as u32, y as u32),
-                    front_facing,
-                    coverage: 1,
-                    lambda,
-                    piece: context,
-                };
-                let Some(c) = shader.fragment(&fragment) else {
-                    discarded += 1;
-                    return;
-                };
-                let color = &mut color[k];
-                *color = if OVER {
-                    let src = premultiply(c);
-                    C::store_premultiplied(src + C::load(*color) * (1.0 - src.w))
-                } else {
-                    C::store(c)
-                };
-                *stored = store(z, *stored);
+                pixel(&mut color[k], &mut depth[k], (xs + k as i64, y), lambda, z);
             });
         });
     stats.fragments_shaded += visited - skipped - failed;
     stats.fragments_discarded += discarded;
     stats.fragments_depth_failed += failed;
+}
+
+/// What became of a covered centre in [`shade_pixel`].
+enum Outcome {
+    Failed,
+    Discarded,
+    Written,
+}
+
+/// A covered centre not masked out, at pixel `(x, y)` with weights `λ` and depth `z`: the depth
+/// test `passes(z, stored)`, the fragment stage, replace (`OVER` false) or "over" blending into
+/// `color`, and `store(z, stored)` into `stored`.
+#[inline(always)]
+fn shade_pixel<S: Shader, C: ColorFormat, const OVER: bool>(
+    shader: &S,
+    context: &PieceContext<S::Varying>,
+    front_facing: bool,
+    (color, stored): (&mut C::Sample, &mut f32),
+    (x, y): (i64, i64),
+    (lambda, z): ([f64; 3], f32),
+    (passes, store): (&impl Fn(f32, f32) -> bool, &impl Fn(f32, f32) -> f32),
+) -> Outcome {
+    if !passes(z, *stored) {
+        return Outcome::Failed;
+    }
+    let weights = context.weights(lambda);
+    let fragment = Fragment {
+        varying: S::Varying::combine3(context.varyings, context.input_weights(weights)),
+        depth: z,
+        pixel: UVec2::new(x as u32, y as u32),
+        front_facing,
+        coverage: 1,
+        lambda,
+        piece: context,
+    };
+    let Some(c) = shader.fragment(&fragment) else {
+        return Outcome::Discarded;
+    };
+    *color = if OVER {
+        let src = premultiply(c);
+        C::store_premultiplied(src + C::load(*color) * (1.0 - src.w))
+    } else {
+        C::store(c)
+    };
+    *stored = store(z, *stored);
+    Outcome::Written
 }
 
 /// One sample per pixel with affine spans ([`Interpolation::AffineSpans`]).
