@@ -11,11 +11,14 @@
 //! pixels, 8 of 8 or 16 of 4) and the covered centres visited by their set bits: one loop per
 //! 64 pixels of the box rather than two per row, and no branch on a row's coverage.
 //!
-//! 32 bits are exact here: an edge function is linear, so its extremes over the box's centres
-//! are at the four corner centres, and a box is only taken when those are below 2³⁰ in
-//! magnitude. Every value at a centre inside the box is then exact, whatever the additions
-//! modulo 2³² that led to it (lanes past the box's right side and rows past its bottom may wrap:
-//! they are masked out).
+//! 32 bits are exact here: an edge function is linear, so over the box's centres `|t|` is at
+//! most `|t₀| + |step|·(w − 1) + |down|·(h − 1)` (`t₀` at the top-left centre, `step` and `down`
+//! its changes per pixel right and down), and a box is only taken when that is below 2³⁰.
+//! Every value at a centre inside the box is then exact, whatever the additions modulo 2³² that
+//! led to it (lanes past the box's right side and rows past its bottom may wrap: they are
+//! masked out). Wider boxes, and larger values, take the exact row walker
+//! ([`EdgeSetup::for_each_covered_span`](crate::edge::EdgeSetup::for_each_covered_span)); so
+//! do targets other than x86-64, with the same results.
 
 use safe_arch::{
     add_i32_m128i, add_m128d, bitor_m128i, m128d, m128i, move_mask_i8_m128i, mul_m128d,
@@ -27,8 +30,8 @@ use crate::run_depth::lambda_depth_pair;
 /// The widest box taken: four registers of four lanes per row.
 pub(crate) const WIDTH: i64 = 16;
 
-/// Bound on |t| at the box's corners for exact 32-bit values (with room for the bias).
-const LIMIT: i64 = 1 << 30;
+/// Bound on |t| over the box's centres for exact 32-bit values (with room for the bias).
+const LIMIT: u64 = 1 << 30;
 
 /// A piece's box in a tile, at most [`WIDTH`] pixels wide, with its edge values in 32 bits.
 #[derive(Clone, Copy, Debug)]
@@ -49,7 +52,7 @@ pub(crate) struct SmallBox {
 impl SmallBox {
     /// The box `[x0, x1) × [y0, y1)` (not empty, at most [`WIDTH`] wide) of edges whose values
     /// less `bias` are `t` at the centre of `(x0, y0)` and change by `step` per pixel right and
-    /// `down` per pixel down; `None` when a corner's value needs more than 32 bits.
+    /// `down` per pixel down; `None` when their values over the box may need more than 32 bits.
     #[inline(always)]
     pub(crate) fn new(
         [x0, y0, x1, y1]: [i64; 4],
@@ -60,13 +63,13 @@ impl SmallBox {
     ) -> Option<Self> {
         debug_assert!(x0 < x1 && y0 < y1 && x1 - x0 <= WIDTH);
         let (right, bottom) = (x1 - x0 - 1, y1 - y0 - 1);
-        // `−LIMIT ≤ v < LIMIT` as one unsigned comparison, for the twelve corner values.
+        // A bound on |t| over the box's centres (each term below 2⁶², so no overflow).
         let mut fits = true;
         for i in 0..3 {
-            let (r, b) = (step[i] * right, down[i] * bottom);
-            for v in [t[i], t[i] + r, t[i] + b, t[i] + r + b] {
-                fits &= ((v + LIMIT) as u64) < (2 * LIMIT) as u64;
-            }
+            let bound = t[i].unsigned_abs()
+                + (step[i] * right).unsigned_abs()
+                + (down[i] * bottom).unsigned_abs();
+            fits &= bound < LIMIT;
         }
         // Truncation is reduction modulo 2³²: exact for the values inside the box.
         fits.then(|| Self {
@@ -125,15 +128,20 @@ impl SmallBox {
         let inv = set_splat_m128d(inv_area);
         let d = depth.map(set_splat_m128d);
         let in_row = (1_u64 << self.size.0) - 1;
-        let mut row = self.t;
+        // The lanes of the current row, stepped down a row by one addition each.
+        let mut row: [[m128i; N]; 3] = core::array::from_fn(|i| {
+            let first = set_splat_i32_m128i(self.t[i]);
+            offsets[i].map(|offset| add_i32_m128i(first, offset))
+        });
+        let step_down = self.down.map(set_splat_i32_m128i);
         let mut top = 0;
         while top < self.size.1 {
             // A fixed number of rows (a loop the branch predictor learns), those past the box
             // masked out after.
             let mut covered = 0_u64;
             for r in 0..rows {
-                covered |= (u64::from(!outside::<N>(row, &offsets)) & in_row) << (lanes * r);
-                row = core::array::from_fn(|i| row[i].wrapping_add(self.down[i]));
+                covered |= (u64::from(!outside::<N>(&row)) & in_row) << (lanes * r);
+                row = core::array::from_fn(|i| row[i].map(|v| add_i32_m128i(v, step_down[i])));
             }
             let left = self.size.1 - top;
             if left < rows {
@@ -169,14 +177,11 @@ impl SmallBox {
 }
 
 /// Bit `k` set where lane `k` of a row is outside an edge (`t < 0` on any), for the row's
-/// first values `row` and the lanes' `offsets` from them.
+/// values `row` (edge by edge, four lanes per register).
 #[inline(always)]
-fn outside<const N: usize>(row: [i32; 3], offsets: &[[m128i; N]; 3]) -> u32 {
-    let splat = row.map(set_splat_i32_m128i);
-    let any: [m128i; N] = core::array::from_fn(|q| {
-        let lane = |i: usize| add_i32_m128i(splat[i], offsets[i][q]);
-        bitor_m128i(bitor_m128i(lane(0), lane(1)), lane(2))
-    });
+fn outside<const N: usize>(row: &[[m128i; N]; 3]) -> u32 {
+    let any: [m128i; N] =
+        core::array::from_fn(|q| bitor_m128i(bitor_m128i(row[0][q], row[1][q]), row[2][q]));
     // Saturating packs keep each lane's sign: 32 → 16 → 8 bits, then one byte mask. With
     // fewer than four registers the high bytes repeat low lanes (masked out by the caller).
     let bytes = pack_i16_to_i8_m128i(
