@@ -33,6 +33,52 @@ impl<C: ColorFormat> TileTarget<'_, C> {
     fn local(&self, x: i64, y: i64) -> usize {
         ((y - self.origin.1) * i64::from(TILE) + (x - self.origin.0)) as usize
     }
+
+    /// Reads one depth and one colour sample per cache line of the tile's pixels in `extent`
+    /// (the union of the boxes of the pieces to draw there), in address order, before the
+    /// pieces are drawn.
+    ///
+    /// The pieces read the depth at scattered pixels, each read a dependency of its pixel's
+    /// depth test, and write the colour there; with small triangles the lines came one miss at
+    /// a time, from beyond the L2 cache (a clear has just written the whole target). Read in
+    /// order, independently of each other, they stream in together (the hardware prefetcher
+    /// follows), and the pieces then find them in the cache: on 10k random 20-pixel triangles
+    /// at 1024², a fifth off the draw. (Software prefetches of the same lines, all at once or
+    /// a few pieces ahead, gained nothing there.)
+    #[inline]
+    pub(crate) fn touch(&self, extent: [i64; 4]) {
+        const LINE: usize = 64;
+        let x0 = extent[0].max(self.rect[0]);
+        let y0 = extent[1].max(self.rect[1]);
+        let x1 = extent[2].min(self.rect[2]);
+        let y1 = extent[3].min(self.rect[3]);
+        if x0 >= x1 || y0 >= y1 {
+            return;
+        }
+        let samples = self.samples as usize;
+        let per_line = (LINE / core::mem::size_of::<C::Sample>()).max(1);
+        let mut bits = 0_u32;
+        for y in y0..y1 {
+            let (first, end) = (
+                self.local(x0, y) * samples,
+                (self.local(x1 - 1, y) + 1) * samples,
+            );
+            // Every line once (the last sample too: a row need not start on a line).
+            let mut i = first;
+            while i < end {
+                bits |= self.depth[i].to_bits();
+                i += LINE / 4;
+            }
+            bits |= self.depth[end - 1].to_bits();
+            let mut i = first;
+            while i < end {
+                core::hint::black_box(self.color[i]);
+                i += per_line;
+            }
+            core::hint::black_box(self.color[end - 1]);
+        }
+        core::hint::black_box(bits);
+    }
 }
 
 #[inline]
