@@ -202,6 +202,8 @@ pub fn draw<S: Shader, C: ColorFormat>(
     let tiles_x = i64::from(target.tiles_x());
     let tiles_y = (h + tile - 1) / tile;
     let mut bins: Vec<Vec<u32>> = vec![Vec::new(); (tiles_x * tiles_y) as usize];
+    // The union of each bin's pieces' boxes (clipped to its tile when used).
+    let mut extents = vec![[i64::MAX, i64::MAX, i64::MIN, i64::MIN]; bins.len()];
     for (id, piece) in pieces.iter().enumerate() {
         let b = piece.edge.bbox;
         let (x0, y0) = (b[0].max(rect[0]), b[1].max(rect[1]));
@@ -211,7 +213,10 @@ pub fn draw<S: Shader, C: ColorFormat>(
         }
         for ty in y0 / tile..=(y1 - 1) / tile {
             for tx in x0 / tile..=(x1 - 1) / tile {
-                bins[(ty * tiles_x + tx) as usize].push(id as u32);
+                let index = (ty * tiles_x + tx) as usize;
+                bins[index].push(id as u32);
+                let e = &mut extents[index];
+                *e = [e[0].min(x0), e[1].min(y0), e[2].max(x1), e[3].max(y1)];
             }
         }
     }
@@ -252,6 +257,7 @@ pub fn draw<S: Shader, C: ColorFormat>(
             return stats;
         }
         let bin = &bins[index];
+        tile_target.touch(extents[index]);
         for (k, &id) in bin.iter().enumerate() {
             if let Some(&ahead) = bin.get(k + PREFETCH_AHEAD) {
                 pieces[ahead as usize].prefetch();

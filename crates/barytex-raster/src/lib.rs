@@ -52,6 +52,8 @@ mod sample_mask;
 mod samples;
 pub mod scanline;
 mod shader;
+#[cfg(target_arch = "x86_64")]
+mod small_box;
 mod state;
 mod supersample;
 mod target;

@@ -59,7 +59,7 @@ fn pairs(
     len: usize,
     mut pixel: impl FnMut(usize, [f64; 3], f32),
 ) {
-    use safe_arch::{add_m128d, convert_to_m128_from_m128d, m128d, mul_m128d, set_splat_m128d};
+    use safe_arch::{add_m128d, m128d, set_splat_m128d};
     // Exact: |e| < 2⁵³ on covered centres, |step| < 2⁴⁰.
     let ef = e.map(|v| v as f64);
     let sf = step.map(|s| s as f64);
@@ -70,20 +70,38 @@ fn pairs(
     let d = depth.map(set_splat_m128d);
     let mut k = 0;
     while k < len {
-        let l = values.map(|v| mul_m128d(v, inv));
-        let z = add_m128d(
-            add_m128d(mul_m128d(l[0], d[0]), mul_m128d(l[1], d[1])),
-            mul_m128d(l[2], d[2]),
-        );
-        let z = convert_to_m128_from_m128d(z).to_array();
-        let l = l.map(m128d::to_array);
-        pixel(k, [l[0][0], l[1][0], l[2][0]], z[0]);
+        let [(l0, z0), (l1, z1)] = lambda_depth_pair(values, inv, d);
+        pixel(k, l0, z0);
         if k + 1 < len {
-            pixel(k + 1, [l[0][1], l[1][1], l[2][1]], z[1]);
+            pixel(k + 1, l1, z1);
         }
         for i in 0..3 {
             values[i] = add_m128d(values[i], two_steps[i]);
         }
         k += 2;
     }
+}
+
+/// The weights `λ = e · inv_area` and depths `z = f32(Σ λⱼ·dⱼ)` (summed left to right) of the
+/// two pixels whose edge values `e` are the lanes of `e` (`inv_area` and the depths `d` in both
+/// lanes): each lane's operations are those of [`depth_of`], rounded as they are.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(crate) fn lambda_depth_pair(
+    e: [safe_arch::m128d; 3],
+    inv_area: safe_arch::m128d,
+    d: [safe_arch::m128d; 3],
+) -> [([f64; 3], f32); 2] {
+    use safe_arch::{add_m128d, convert_to_m128_from_m128d, m128d, mul_m128d};
+    let l = e.map(|v| mul_m128d(v, inv_area));
+    let z = add_m128d(
+        add_m128d(mul_m128d(l[0], d[0]), mul_m128d(l[1], d[1])),
+        mul_m128d(l[2], d[2]),
+    );
+    let z = convert_to_m128_from_m128d(z).to_array();
+    let l = l.map(m128d::to_array);
+    [
+        ([l[0][0], l[1][0], l[2][0]], z[0]),
+        ([l[0][1], l[1][1], l[2][1]], z[1]),
+    ]
 }

@@ -9,6 +9,7 @@ use crate::draw::DrawStats;
 use crate::format::ColorFormat;
 use crate::run_depth::for_each_run_pixel;
 use crate::samples::SamplePattern;
+use crate::shader::PieceContext;
 use crate::state::{Blend, DepthCompare, Interpolation, PipelineState};
 use crate::target::{TILE, premultiply};
 use crate::{Fragment, Shader};
@@ -31,6 +32,52 @@ impl<C: ColorFormat> TileTarget<'_, C> {
     #[inline]
     fn local(&self, x: i64, y: i64) -> usize {
         ((y - self.origin.1) * i64::from(TILE) + (x - self.origin.0)) as usize
+    }
+
+    /// Reads one depth and one colour sample per cache line of the tile's pixels in `extent`
+    /// (the union of the boxes of the pieces to draw there), in address order, before the
+    /// pieces are drawn.
+    ///
+    /// The pieces read the depth at scattered pixels, each read a dependency of its pixel's
+    /// depth test, and write the colour there; with small triangles the lines came one miss at
+    /// a time, from beyond the L2 cache (a clear has just written the whole target). Read in
+    /// order, independently of each other, they stream in together (the hardware prefetcher
+    /// follows), and the pieces then find them in the cache: on 10k random 20-pixel triangles
+    /// at 1024², a fifth off the draw. (Software prefetches of the same lines, all at once or
+    /// a few pieces ahead, gained nothing there.)
+    #[inline]
+    pub(crate) fn touch(&self, extent: [i64; 4]) {
+        const LINE: usize = 64;
+        let x0 = extent[0].max(self.rect[0]);
+        let y0 = extent[1].max(self.rect[1]);
+        let x1 = extent[2].min(self.rect[2]);
+        let y1 = extent[3].min(self.rect[3]);
+        if x0 >= x1 || y0 >= y1 {
+            return;
+        }
+        let samples = self.samples as usize;
+        let per_line = (LINE / core::mem::size_of::<C::Sample>()).max(1);
+        let mut bits = 0_u32;
+        for y in y0..y1 {
+            let (first, end) = (
+                self.local(x0, y) * samples,
+                (self.local(x1 - 1, y) + 1) * samples,
+            );
+            // Every line once (the last sample too: a row need not start on a line).
+            let mut i = first;
+            while i < end {
+                bits |= self.depth[i].to_bits();
+                i += LINE / 4;
+            }
+            bits |= self.depth[end - 1].to_bits();
+            let mut i = first;
+            while i < end {
+                core::hint::black_box(self.color[i]);
+                i += per_line;
+            }
+            core::hint::black_box(self.color[end - 1]);
+        }
+        core::hint::black_box(bits);
     }
 }
 
@@ -147,6 +194,43 @@ fn shade_centres<S: Shader, C: ColorFormat, const OVER: bool, const MASKED: bool
     let depth = &mut *tile.depth;
     // Fragments shaded = pixels visited − masked − failed (one counter per pixel less).
     let (mut visited, mut skipped, mut discarded, mut failed) = (0_u64, 0_u64, 0_u64, 0_u64);
+    // A covered centre not masked out, at pixel `(x, y)` with weights `λ` and depth `z`.
+    let mut pixel =
+        |color: &mut C::Sample, stored: &mut f32, xy, lambda, z| match shade_pixel::<S, C, OVER>(
+            shader,
+            context,
+            front_facing,
+            (color, stored),
+            xy,
+            (lambda, z),
+            (&passes, &store),
+        ) {
+            Outcome::Failed => failed += 1,
+            Outcome::Discarded => discarded += 1,
+            Outcome::Written => {}
+        };
+    #[cfg(target_arch = "x86_64")]
+    if let Some(small) = piece.edge.small_box(tile.rect) {
+        // A narrow box: its covered centres from bit masks, without the spans' setup and loops.
+        small.for_each_covered(
+            inv_area,
+            depths,
+            #[inline(always)]
+            |x, y, lambda, z| {
+                let index = ((y - oy) * i64::from(TILE) + (x - ox)) as usize;
+                visited += 1;
+                if MASKED && mask.is_some_and(|keep| !keep[index]) {
+                    skipped += 1;
+                    return;
+                }
+                pixel(&mut color[index], &mut depth[index], (x, y), lambda, z);
+            },
+        );
+        stats.fragments_shaded += visited - skipped - failed;
+        stats.fragments_discarded += discarded;
+        stats.fragments_depth_failed += failed;
+        return;
+    }
     let step = piece.edge.x_step();
     let area2 = piece.edge.area2();
     piece
@@ -165,38 +249,58 @@ fn shade_centres<S: Shader, C: ColorFormat, const OVER: bool, const MASKED: bool
                     skipped += 1;
                     return;
                 }
-                let stored = &mut depth[k];
-                if !passes(z, *stored) {
-                    failed += 1;
-                    return;
-                }
-                let weights = context.weights(lambda);
-                let fragment = Fragment {
-                    varying: S::Varying::combine3(context.varyings, context.input_weights(weights)),
-                    depth: z,
-                    pixel: UVec2::new((xs + k as i64) as u32, y as u32),
-                    front_facing,
-                    coverage: 1,
-                    lambda,
-                    piece: context,
-                };
-                let Some(c) = shader.fragment(&fragment) else {
-                    discarded += 1;
-                    return;
-                };
-                let color = &mut color[k];
-                *color = if OVER {
-                    let src = premultiply(c);
-                    C::store_premultiplied(src + C::load(*color) * (1.0 - src.w))
-                } else {
-                    C::store(c)
-                };
-                *stored = store(z, *stored);
+                pixel(&mut color[k], &mut depth[k], (xs + k as i64, y), lambda, z);
             });
         });
     stats.fragments_shaded += visited - skipped - failed;
     stats.fragments_discarded += discarded;
     stats.fragments_depth_failed += failed;
+}
+
+/// What became of a covered centre in [`shade_pixel`].
+enum Outcome {
+    Failed,
+    Discarded,
+    Written,
+}
+
+/// A covered centre not masked out, at pixel `(x, y)` with weights `λ` and depth `z`: the depth
+/// test `passes(z, stored)`, the fragment stage, replace (`OVER` false) or "over" blending into
+/// `color`, and `store(z, stored)` into `stored`.
+#[inline(always)]
+fn shade_pixel<S: Shader, C: ColorFormat, const OVER: bool>(
+    shader: &S,
+    context: &PieceContext<S::Varying>,
+    front_facing: bool,
+    (color, stored): (&mut C::Sample, &mut f32),
+    (x, y): (i64, i64),
+    (lambda, z): ([f64; 3], f32),
+    (passes, store): (&impl Fn(f32, f32) -> bool, &impl Fn(f32, f32) -> f32),
+) -> Outcome {
+    if !passes(z, *stored) {
+        return Outcome::Failed;
+    }
+    let weights = context.weights(lambda);
+    let fragment = Fragment {
+        varying: S::Varying::combine3(context.varyings, context.input_weights(weights)),
+        depth: z,
+        pixel: UVec2::new(x as u32, y as u32),
+        front_facing,
+        coverage: 1,
+        lambda,
+        piece: context,
+    };
+    let Some(c) = shader.fragment(&fragment) else {
+        return Outcome::Discarded;
+    };
+    *color = if OVER {
+        let src = premultiply(c);
+        C::store_premultiplied(src + C::load(*color) * (1.0 - src.w))
+    } else {
+        C::store(c)
+    };
+    *stored = store(z, *stored);
+    Outcome::Written
 }
 
 /// One sample per pixel with affine spans ([`Interpolation::AffineSpans`]).
