@@ -500,7 +500,9 @@ impl EdgeSetup {
 
     /// The change of the barycentrics (input order) per pixel right and per pixel down.
     pub(crate) fn gradients(&self) -> (DVec2, DVec2, DVec2) {
-        let s = ONE as f64 / self.area2 as f64;
+        // `256 / area2` without a division: scaling by a power of two is exact, so this is the
+        // correctly rounded quotient, bit for bit (`gradient_scale_is_the_quotient`).
+        let s = ONE as f64 * self.inv_area;
         let g = |j: usize| DVec2::new(self.a[j] as f64 * s, self.b[j] as f64 * s);
         (g(0), g(1), g(2))
     }
@@ -517,6 +519,21 @@ mod tests {
             state ^= state >> 7;
             state ^= state << 17;
             state
+        }
+    }
+
+    /// `256 · (1 / a)` is `256 / a` bit for bit for every positive integer area below 2⁶²
+    /// (a power-of-two scale of a correctly rounded quotient, far from under- and overflow).
+    #[test]
+    fn gradient_scale_is_the_quotient() {
+        let mut next = stream(0x9e37_79b9_7f4a_7c15);
+        let mut areas: Vec<i64> = (1..100_000).collect();
+        areas.extend((0..62).flat_map(|k| [(1_i64 << k) - 1, 1 << k, (1 << k) + 1]));
+        areas.extend((0..200_000).map(|_| (next() >> 2) as i64 >> (next() % 62)));
+        for a in areas.into_iter().filter(|&a| a > 0) {
+            let quotient = ONE as f64 / a as f64;
+            let scaled = ONE as f64 * (1.0 / a as f64);
+            assert_eq!(quotient.to_bits(), scaled.to_bits(), "area2 {a}");
         }
     }
 

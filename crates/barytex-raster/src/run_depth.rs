@@ -11,6 +11,7 @@
 //! Larger triangles take the scalar path on i64 values.
 
 /// Below this, edge values of covered centres (`0 ≤ E ≤ area2`) are exact in f64.
+#[cfg(target_arch = "x86_64")]
 const EXACT_F64: i64 = 1 << 53;
 
 /// Calls `pixel(k, λ, z)` for the pixels `k = 0..len` of a run whose edge values at the first
