@@ -75,6 +75,13 @@ pub(crate) fn filter<T: Texel>(
             let ss = s as f32 - st.x;
             let r2 = a * ss * ss + b * ss * tt + c * tt * tt;
             if r2 < 1.0 {
+                // The form is positive definite, so `r2 ≥ 0`; rounding can make it negative
+                // where `ss` and `tt` are huge (coordinates beyond i64 texel indices, whose
+                // terms nearly cancel), and a weight of `e^(−α·r2)` then overflows to +∞ and
+                // the average to NaN, i.e. transparent black (found by the `sampling` fuzz
+                // target: uv ≈ 1.7e22 under clamp-to-edge). Clamped, the weight stays in
+                // `[0, 1 − e^(−α)]`.
+                let r2 = r2.max(0.0);
                 let weight = f64::from((-ALPHA * r2).exp() - edge);
                 sum += fetch(level, s, t, addressing).as_dvec4() * weight;
                 weight_sum += weight;
