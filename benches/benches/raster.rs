@@ -25,7 +25,7 @@ use std::time::Duration;
 use barytex_raster::{LinearRgba32f, Rgba8Unorm};
 use common::{
     ClipMesh, FLAT, NearestTexture, barytex_target, euc_targets, flat_u32, raster_only_barytex,
-    raster_only_euc, render_barytex, render_euc,
+    raster_only_barytex_draw_cleared, raster_only_euc, render_barytex, render_euc,
 };
 use criterion::{Criterion, criterion_group, criterion_main};
 use glam::{Mat4, Vec2, Vec3, Vec4};
@@ -122,6 +122,11 @@ fn bench(c: &mut Criterion) {
         let mut euc16 = euc_targets(SIZE, [0.0_f32; 4]);
         group.bench_function("barytex_rgba8", |b| {
             b.iter(|| one.install(|| raster_only_barytex(&scene, &vertices, &mut fb8)));
+        });
+        group.bench_function("barytex_rgba8_draw_cleared", |b| {
+            b.iter(|| {
+                one.install(|| raster_only_barytex_draw_cleared(&scene, &vertices, &mut fb8))
+            });
         });
         group.bench_function("euc_u32", |b| {
             b.iter(|| raster_only_euc(&scene, flat_u32(), 0, &mut euc8));

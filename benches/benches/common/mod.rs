@@ -5,7 +5,7 @@
 
 use barytex_raster::{
     ColorFormat, CullMode, Fragment, Framebuffer, PipelineState, SamplePattern, Shader,
-    TargetLimits, draw,
+    TargetLimits, draw, draw_cleared,
 };
 use euc::buffer::Buffer2d;
 use euc::rasterizer::{BackfaceCullingDisabled, Triangles};
@@ -244,6 +244,27 @@ pub(crate) fn raster_only_barytex<C: ColorFormat>(
     };
     draw(
         fb,
+        &ConstantShader { mesh },
+        &state,
+        vertices,
+        &mesh.indices,
+    );
+}
+
+/// [`raster_only_barytex`] with the clear done by the draw, tile by tile
+/// ([`draw_cleared`]): the same pixels, depths and statistics.
+pub(crate) fn raster_only_barytex_draw_cleared<C: ColorFormat>(
+    mesh: &ClipMesh,
+    vertices: &[u32],
+    fb: &mut Framebuffer<C>,
+) {
+    let state = PipelineState {
+        cull: CullMode::None,
+        ..PipelineState::default()
+    };
+    draw_cleared(
+        fb,
+        Vec4::ZERO,
         &ConstantShader { mesh },
         &state,
         vertices,

@@ -132,6 +132,49 @@ pub(crate) fn writable_rect<C: ColorFormat>(
 /// otherwise (the pieces are visited in tile order, not in the order they were built).
 const PREFETCH_AHEAD: usize = 4;
 
+/// `target.clear(color)` then [`draw`], bit for bit, in one pass over the target's memory:
+/// each tile is cleared by the job that draws it, just before, so that its lines are still in
+/// the cache when its triangles are drawn (the clear of a tiled GPU or of Mesa's llvmpipe, a
+/// render pass's "load op clear" in Vulkan and WebGPU). The mask is kept (as by
+/// [`Framebuffer::clear`]: every sample is cleared, masked or not).
+///
+/// ```
+/// use barytex_raster::{Fragment, Framebuffer, PipelineState, Shader, TargetLimits, draw,
+///     draw_cleared};
+/// use glam::{Vec3, Vec4};
+///
+/// struct White;
+/// impl Shader for White {
+///     type Vertex = Vec3;
+///     type Varying = f32;
+///     fn vertex(&self, v: &Vec3) -> (Vec4, f32) { (v.extend(1.0), 0.0) }
+///     fn fragment(&self, _: &Fragment<'_, f32>) -> Option<Vec4> { Some(Vec4::ONE) }
+/// }
+/// let tri = [Vec3::new(-1.0, -1.0, 0.5), Vec3::new(1.0, -1.0, 0.5), Vec3::new(-1.0, 1.0, 0.5)];
+/// let (limits, state) = (TargetLimits::default(), PipelineState::default());
+/// let red = Vec4::new(1.0, 0.0, 0.0, 1.0);
+/// let mut a = Framebuffer::new(70, 70, Vec4::ONE, &limits)?;
+/// a.clear(red);
+/// let stats_a = draw(&mut a, &White, &state, &tri, &[0, 1, 2]);
+/// let mut b = Framebuffer::new(70, 70, Vec4::ONE, &limits)?;
+/// let stats_b = draw_cleared(&mut b, red, &White, &state, &tri, &[0, 1, 2]);
+/// assert_eq!(stats_a, stats_b);
+/// assert_eq!(b.pixel(69, 0), Some(red)); // cleared, not drawn
+/// assert_eq!(b.pixel(0, 69), Some(Vec4::ONE)); // drawn
+/// assert!((0..70).all(|y| (0..70).all(|x| a.pixel(x, y) == b.pixel(x, y))));
+/// # Ok::<(), barytex_raster::RasterError>(())
+/// ```
+pub fn draw_cleared<S: Shader, C: ColorFormat>(
+    target: &mut Framebuffer<C>,
+    color: Vec4,
+    shader: &S,
+    state: &PipelineState,
+    vertices: &[S::Vertex],
+    indices: &[u32],
+) -> DrawStats {
+    draw_tiles(target, Some(color), shader, state, vertices, indices)
+}
+
 /// A tile with work: its index and its slices of the colour and depth buffers.
 type TileJob<'a, C> = (usize, (&'a mut [<C as ColorFormat>::Sample], &'a mut [f32]));
 
@@ -186,6 +229,19 @@ pub fn draw<S: Shader, C: ColorFormat>(
     vertices: &[S::Vertex],
     indices: &[u32],
 ) -> DrawStats {
+    draw_tiles(target, None, shader, state, vertices, indices)
+}
+
+/// [`draw`] and the clears of every tile: `clear` (a stored colour) and depth 1 written by each
+/// tile's job before it draws, or by the caller's `Framebuffer::clear` when there is no job.
+fn draw_tiles<S: Shader, C: ColorFormat>(
+    target: &mut Framebuffer<C>,
+    clear: Option<Vec4>,
+    shader: &S,
+    state: &PipelineState,
+    vertices: &[S::Vertex],
+    indices: &[u32],
+) -> DrawStats {
     let mut stats = DrawStats::default();
     let shaded: Vec<(Vec4, S::Varying)> = vertices.par_iter().map(|v| shader.vertex(v)).collect();
     let viewport = state
@@ -194,8 +250,12 @@ pub fn draw<S: Shader, C: ColorFormat>(
     let pieces = assemble_parallel(&shaded, indices, state, viewport, &mut stats);
     let rect = writable_rect(target, state, viewport);
     if rect[0] >= rect[2] || rect[1] >= rect[3] || pieces.is_empty() {
+        if let Some(color) = clear {
+            target.clear(color);
+        }
         return stats;
     }
+    let clear = clear.map(C::store);
     // Bin pieces to tiles in submission order.
     let h = i64::from(target.height());
     let tile = i64::from(TILE);
@@ -234,7 +294,7 @@ pub fn draw<S: Shader, C: ColorFormat>(
         .chunks_mut(tile_samples)
         .zip(target.depth.chunks_mut(tile_samples))
         .enumerate()
-        .filter(|(index, _)| !bins[*index].is_empty())
+        .filter(|(index, _)| clear.is_some() || !bins[*index].is_empty())
         .collect();
     let job = |(index, (color, depth)): TileJob<'_, C>| {
         let (tx, ty) = (index as i64 % tiles_x, index as i64 / tiles_x);
@@ -253,11 +313,19 @@ pub fn draw<S: Shader, C: ColorFormat>(
             samples,
         };
         let mut stats = DrawStats::default();
+        // A clear here, just before the tile is drawn, leaves its lines in the cache for it
+        // (and needs no `touch`): one pass over the target's memory instead of two.
+        if let Some(color) = clear {
+            tile_target.color.fill(color);
+            tile_target.depth.fill(1.0);
+        }
         if tile_target.mask.is_some_and(|m| !m.contains(&true)) {
             return stats;
         }
         let bin = &bins[index];
-        tile_target.touch(extents[index]);
+        if clear.is_none() {
+            tile_target.touch(extents[index]);
+        }
         for (k, &id) in bin.iter().enumerate() {
             if let Some(&ahead) = bin.get(k + PREFETCH_AHEAD) {
                 pieces[ahead as usize].prefetch();

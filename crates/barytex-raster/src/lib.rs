@@ -6,7 +6,7 @@
 //! | concept | items |
 //! |---|---|
 //! | the seam | [`Shader`], [`Fragment`] |
-//! | the draw call | [`draw`] (triangles), [`draw_points`], [`draw_lines`] with a [`LineTopology`] (OpenGL 4.6 §14.4, §14.5: the diamond-exit rule), [`DrawStats`] |
+//! | the draw call | [`draw`] (triangles; [`draw_cleared`] clears each tile just before drawing it), [`draw_points`], [`draw_lines`] with a [`LineTopology`] (OpenGL 4.6 §14.4, §14.5: the diamond-exit rule), [`DrawStats`] |
 //! | state | [`PipelineState`], [`CullMode`], [`FrontFace`], [`Viewport`], [`Scissor`], [`DepthCompare`], [`Blend`], [`Interpolation`] |
 //! | targets | [`Framebuffer`] (one or more samples per pixel, tile-major storage) under [`TargetLimits`], its colour in a [`ColorFormat`]: [`LinearRgba32f`] (16 bytes, the default), [`Rgba8Unorm`] (4 bytes), `Srgba8Unorm` (4 bytes, feature `texture`); errors are [`RasterError`]s |
 //! | masks | [`mask_samples`] (the samples a draw would write, as a one-bit stencil [`SampleMask`]) and [`Framebuffer::copy_samples`] (composite another target's samples through it) |
@@ -60,7 +60,7 @@ mod target;
 mod tile;
 
 pub use adaptive::{AdaptiveOptions, AdaptiveStats, render_adaptive};
-pub use draw::{DrawStats, draw};
+pub use draw::{DrawStats, draw, draw_cleared};
 pub use edge::{MAX_COORDINATE, SUBPIXEL_BITS};
 pub use error::{RasterError, TargetLimits};
 #[cfg(feature = "texture")]

@@ -110,11 +110,18 @@ impl SmallBox {
     ) {
         let lanes = 4 * N as u32;
         let rows = 64 / lanes;
-        // Lane `k` of register `q` adds `step·(4q + k)` to the row's first value.
+        // Lane `k` of register `q` adds `step·(4q + k)` to the row's first value: the first
+        // register from three scalar additions, each next one by adding `4·step` to every lane
+        // (additions modulo 2³², as the products were).
         let offsets: [[m128i; N]; 3] = core::array::from_fn(|i| {
-            core::array::from_fn(|q| {
-                let s = self.step[i];
-                m128i::from([0, 1, 2, 3].map(|k: i32| s.wrapping_mul(4 * q as i32 + k)))
+            let s = self.step[i];
+            let (s2, s4) = (s.wrapping_add(s), s.wrapping_mul(4));
+            let four = set_splat_i32_m128i(s4);
+            let mut quad = m128i::from([0, s, s2, s2.wrapping_add(s)]);
+            core::array::from_fn(|_| {
+                let this = quad;
+                quad = add_i32_m128i(quad, four);
+                this
             })
         });
         // The edge values `E = t + bias` of a centre `(dx, dy)` from the top-left one, in f64:
