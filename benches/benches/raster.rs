@@ -13,7 +13,8 @@
 //! interpolated float and the same colour format on both sides, depth-tested — 4 bytes
 //! (barytex's `Rgba8Unorm` beside euc writing the same `u32`) and 16 bytes (RGBA f32 on both
 //! sides). The targets are allocated once, outside the timed loop, and cleared (colour and
-//! depth) in every iteration on both sides.
+//! depth) in every iteration on both sides; `barytex_rgba8_draw_cleared` draws the same with
+//! barytex's `draw_cleared`, which clears each tile just before drawing it (the same bytes).
 //!
 //! Run with `cargo bench -p barytex-benches --bench raster`.
 
@@ -24,11 +25,12 @@ use std::time::Duration;
 
 use barytex_raster::{LinearRgba32f, Rgba8Unorm};
 use common::{
-    ClipMesh, FLAT, NearestTexture, barytex_target, euc_targets, flat_u32, raster_only_barytex,
-    raster_only_barytex_draw_cleared, raster_only_euc, render_barytex, render_euc,
+    ClipMesh, FLAT, NearestTexture, barytex_target, euc_targets, flat_u32, random_scene,
+    raster_only_barytex, raster_only_barytex_draw_cleared, raster_only_euc, render_barytex,
+    render_euc,
 };
 use criterion::{Criterion, criterion_group, criterion_main};
-use glam::{Mat4, Vec2, Vec3, Vec4};
+use glam::{Mat4, Vec3};
 
 const SIZE: u32 = 1024;
 
@@ -56,36 +58,6 @@ fn torus_scene() -> ClipMesh {
     }
 }
 
-fn random_scene() -> ClipMesh {
-    let mut state = 0x2545_F491_4F6C_DD1D_u64;
-    let mut next = || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 40) as f32 / (1u64 << 24) as f32
-    };
-    let mut scene = ClipMesh {
-        clip: Vec::new(),
-        uv: Vec::new(),
-        normal: Vec::new(),
-        indices: Vec::new(),
-    };
-    let px = 2.0 / SIZE as f32;
-    for _ in 0..10_000 {
-        let centre = Vec2::new(next() * 2.0 - 1.0, next() * 2.0 - 1.0);
-        let z = next();
-        for _ in 0..3 {
-            let offset = Vec2::new(next() - 0.5, next() - 0.5) * 20.0 * px;
-            let p = centre + offset;
-            scene.indices.push(scene.clip.len() as u32);
-            scene.clip.push(Vec4::new(p.x, p.y, z, 1.0));
-            scene.uv.push(Vec2::new(next(), next()));
-            scene.normal.push(Vec3::Z);
-        }
-    }
-    scene
-}
-
 fn bench(c: &mut Criterion) {
     let texture = NearestTexture::checker(256, 16);
     let one = rayon::ThreadPoolBuilder::new()
@@ -98,7 +70,7 @@ fn bench(c: &mut Criterion) {
         .expect("pool");
     for (name, scene, lit) in [
         ("torus_6k", torus_scene(), true),
-        ("random_10k", random_scene(), false),
+        ("random_10k", random_scene(SIZE), false),
     ] {
         let mut group = c.benchmark_group(format!("raster_1024_{name}"));
         group.bench_function("barytex_1_thread", |b| {

@@ -298,3 +298,35 @@ pub(crate) fn raster_only_euc<P: Clone>(
             Some(depth),
         );
 }
+
+/// 10 000 random triangles about 20 pixels across on a `size²` target, at random depths in
+/// [0, 1] (the raster benchmarks' `random_10k`).
+pub(crate) fn random_scene(size: u32) -> ClipMesh {
+    let mut state = 0x2545_F491_4F6C_DD1D_u64;
+    let mut next = || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 40) as f32 / (1u64 << 24) as f32
+    };
+    let mut scene = ClipMesh {
+        clip: Vec::new(),
+        uv: Vec::new(),
+        normal: Vec::new(),
+        indices: Vec::new(),
+    };
+    let px = 2.0 / size as f32;
+    for _ in 0..10_000 {
+        let centre = Vec2::new(next() * 2.0 - 1.0, next() * 2.0 - 1.0);
+        let z = next();
+        for _ in 0..3 {
+            let offset = Vec2::new(next() - 0.5, next() - 0.5) * 20.0 * px;
+            let p = centre + offset;
+            scene.indices.push(scene.clip.len() as u32);
+            scene.clip.push(Vec4::new(p.x, p.y, z, 1.0));
+            scene.uv.push(Vec2::new(next(), next()));
+            scene.normal.push(Vec3::Z);
+        }
+    }
+    scene
+}
