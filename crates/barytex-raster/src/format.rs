@@ -16,7 +16,7 @@ mod sealed {
 }
 
 /// How a target stores one sample's colour; implemented by [`LinearRgba32f`], [`Rgba8Unorm`] and
-/// (feature `texture`) [`Srgba8Unorm`] only.
+/// (feature `texture`) `Srgba8Unorm` only.
 ///
 /// ```
 /// use barytex_raster::{ColorFormat, LinearRgba32f, Rgba8Unorm};

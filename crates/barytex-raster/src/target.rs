@@ -259,7 +259,9 @@ impl<C: ColorFormat> Framebuffer<C> {
             .then(|| self.depth[self.pixel_index(x, y) * self.samples as usize])
     }
 
-    /// Clears every sample to `color` (straight alpha) and depth 1; the mask stays.
+    /// Clears every sample to `color` (straight alpha) and depth 1; the mask stays. Followed by
+    /// a [`draw`](crate::draw), [`draw_cleared`](crate::draw_cleared) gives the same target in
+    /// one pass over its memory instead of two.
     ///
     /// ```
     /// use barytex_raster::{Framebuffer, TargetLimits};
