@@ -232,8 +232,9 @@ pub fn draw<S: Shader, C: ColorFormat>(
     draw_tiles(target, None, shader, state, vertices, indices)
 }
 
-/// [`draw`] and the clears of every tile: `clear` (a stored colour) and depth 1 written by each
-/// tile's job before it draws, or by the caller's `Framebuffer::clear` when there is no job.
+/// [`draw`], and with `clear` the clear of every tile: that colour and depth 1 written by each
+/// tile's job before it draws (every tile has a job then), or by [`Framebuffer::clear`] when the
+/// draw has nothing to draw.
 fn draw_tiles<S: Shader, C: ColorFormat>(
     target: &mut Framebuffer<C>,
     clear: Option<Vec4>,

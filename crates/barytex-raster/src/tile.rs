@@ -12,11 +12,11 @@ use crate::samples::SamplePattern;
 use crate::shader::PieceContext;
 use crate::state::{Blend, DepthCompare, Interpolation, PipelineState};
 use crate::target::{TILE, premultiply};
+use crate::{Fragment, Shader};
 
 /// The pixels of a tile (its buffers' length at one sample per pixel).
 #[cfg(target_arch = "x86_64")]
 const TILE_PIXELS: usize = (TILE * TILE) as usize;
-use crate::{Fragment, Shader};
 
 /// A tile's slice of the target and what it needs to address it.
 pub(crate) struct TileTarget<'a, C: ColorFormat> {
