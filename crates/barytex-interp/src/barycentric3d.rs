@@ -59,9 +59,10 @@ impl Barycentric3d {
 /// # Accuracy
 /// For all finite input (any distance of `p` from the triangle, any scale), each weight is
 /// within `1 ulp + 2⁻⁴⁶·κ` of the exact rational weight of the projected point,
-/// `κ = max(|p|, |a|, |b|, |c|) · max edge length / |2·area|`; a weight whose exact value is
-/// beyond f32's range is an infinity, of its sign unless that value is itself within the
-/// f64 error `2⁻⁴⁹·κ` below (an input so ill-conditioned that rounding decides the sign). Derivation: the weight of `a` is computed as
+/// `κ = max(|p|, |a|, |b|, |c|) · max edge length / |2·area|`. A weight computed beyond f32's
+/// range is an infinity of its sign when its exact value is beyond that range too (the
+/// computed value exceeds `f32::MAX` by more than `2⁻⁴⁸·κ`), else `±f32::MAX`, within the
+/// bound of any exact value the error allows. Derivation: the weight of `a` is computed as
 /// `((b − p) × (c − b))·n / |n|²` in f64 from the exact f32 inputs; its numerator's rounding
 /// error is at most `8·2⁻⁵³·|b − p|·|c − b|·|n|`, so the weight's is at most
 /// `16·2⁻⁵³·κ = 2⁻⁴⁹·κ` before the final rounding to f32, and `n`'s own `2⁻³⁰` relative error
@@ -104,10 +105,38 @@ pub fn barycentric_3d(p: Vec3, tri: [Vec3; 3]) -> Result<Barycentric3d, InterpEr
     // `(b − p) × (b − p) = 0`), the rounding of each product is relative to `|b − p|·|c − b|`, one
     // long vector times one edge, instead of `|b − p|·|c − p|`: far from a small triangle the
     // latter is quadratic in the distance and rounds the weight away.
-    let weight = |q: DVec3, r: DVec3| ((q - p).cross(r - q).dot(n) / nn) as f32;
+    let weight = |q: DVec3, r: DVec3| (q - p).cross(r - q).dot(n) / nn;
+    let weights = [weight(b, c), weight(c, a), weight(a, b)];
     Ok(Barycentric3d {
-        weights: [weight(b, c), weight(c, a), weight(a, b)],
+        weights: weights.map(|w| to_f32_saturating(w, || kappa(p, [a, b, c], nn))),
     })
+}
+
+/// 2⁻⁴⁸ (`powi` is not in `core`).
+const TWO_POW_MINUS_48: f64 = 1.0 / (1_u64 << 48) as f64;
+
+/// `w as f32`, except that a finite `w` beyond f32's range whose exact value may be within it
+/// (`|w| − 2⁻⁴⁸·κ ≤ f32::MAX`, twice the f64 error bound `2⁻⁴⁹·κ`, the margin covering κ's
+/// own rounding) becomes `±f32::MAX`: an infinity there would be infinitely far from a finite
+/// exact weight, `f32::MAX` is within `3·2⁻⁴⁹·κ` of it. Found by the fuzz target `interp_3d`:
+/// a weight of exact value 3.8e37 computed as 3.5e38 (κ ≈ 2¹⁸⁰) was an infinity.
+fn to_f32_saturating(w: f64, kappa: impl FnOnce() -> f64) -> f32 {
+    let rounded = w as f32;
+    if rounded.is_infinite()
+        && w.is_finite()
+        && w.abs() - kappa() * TWO_POW_MINUS_48 <= f64::from(f32::MAX)
+    {
+        return f32::MAX.copysign(rounded);
+    }
+    rounded
+}
+
+/// `κ = max(|p|, |a|, |b|, |c|) · max edge length / |n|` (`|n| = |2·area|`, `nn = |n|²`), the
+/// condition number of the accuracy bound; only computed for weights beyond f32's range.
+fn kappa(p: DVec3, [a, b, c]: [DVec3; 3], nn: f64) -> f64 {
+    let size = [p, a, b, c].iter().map(|v| v.length()).fold(0.0, f64::max);
+    let edge = (b - a).length().max((c - b).length()).max((a - c).length());
+    size * edge / crate::math::sqrt(nn)
 }
 
 pub(crate) mod methods {

@@ -13,7 +13,8 @@
 //!   collinear vertices (decided with exact rationals); otherwise no NaN weight, and at any
 //!   distance from the triangle each weight within `1 ulp + 2⁻⁴⁶·κ` of the exact weight of the
 //!   projected point (its `# Accuracy`; an infinity is accepted where the exact weight rounds to
-//!   it). The weights then sum to 1 within the sum of those bounds. (The input
+//!   it, and `±f32::MAX` falls under the bound where a computed weight beyond f32's range may
+//!   have a finite exact value: `crash-487e…`, exact 3.8e37, was an infinity). The weights then sum to 1 within the sum of those bounds. (The input
 //!   `fuzz/regressions/interp_3d/crash-54d6…`, a point 1e13 from a triangle of size 1e-17, broke
 //!   the bound before the weights were computed from one long vector and one edge.)
 //! - `inverse_bilinear_3d`: `NonFinite` exactly for NaN/∞ input, no other error than
