@@ -186,7 +186,10 @@ type TileJob<'a, C> = (usize, (&'a mut [<C as ColorFormat>::Sample], &'a mut [f3
 ///
 /// Runs on the current rayon thread pool; the output is bit-identical for any number of threads.
 /// Nothing panics on bad input: out-of-range indices, non-finite or huge positions, zero-area and
-/// fully clipped triangles are dropped and counted in [`DrawStats`].
+/// fully clipped triangles are dropped and counted in [`DrawStats`]. Memory: besides the shaded
+/// vertices and the triangles' clipped pieces (both proportional to the input), the tiles'
+/// lists of pieces are held to 64 MiB; a scene whose lists would be longer (many triangles
+/// each over many tiles) is drawn in batches of consecutive triangles, with the same result.
 ///
 /// ```
 /// use barytex_raster::{DepthCompare, DrawStats, Fragment, Framebuffer, PipelineState, Shader,
@@ -232,6 +235,13 @@ pub fn draw<S: Shader, C: ColorFormat>(
     draw_tiles(target, None, shader, state, vertices, indices)
 }
 
+/// The most bin entries (a piece's index in one tile's list, 4 bytes) a draw holds at once:
+/// 64 MiB. Bins hold pieces × tiles entries, a product no input size bounds (a million
+/// full-screen triangles on a 4096² target would need 16 GiB), so a draw whose bins would grow
+/// past this is drawn in batches of consecutive pieces, each batch's tiles before the next's:
+/// every tile still draws its pieces in submission order, so the output does not change.
+const MAX_BIN_ENTRIES: usize = 1 << 24;
+
 /// [`draw`], and with `clear` the clear of every tile: that colour and depth 1 written by each
 /// tile's job before it draws (every tile has a job then), or by [`Framebuffer::clear`] when the
 /// draw has nothing to draw.
@@ -242,6 +252,26 @@ fn draw_tiles<S: Shader, C: ColorFormat>(
     state: &PipelineState,
     vertices: &[S::Vertex],
     indices: &[u32],
+) -> DrawStats {
+    draw_batched(
+        target,
+        clear,
+        shader,
+        state,
+        (vertices, indices),
+        MAX_BIN_ENTRIES,
+    )
+}
+
+/// [`draw_tiles`] with bins of at most `max_entries` entries (or one piece's tiles, when that is
+/// more) at a time.
+fn draw_batched<S: Shader, C: ColorFormat>(
+    target: &mut Framebuffer<C>,
+    clear: Option<Vec4>,
+    shader: &S,
+    state: &PipelineState,
+    (vertices, indices): (&[S::Vertex], &[u32]),
+    max_entries: usize,
 ) -> DrawStats {
     let mut stats = DrawStats::default();
     let shaded: Vec<(Vec4, S::Varying)> = vertices.par_iter().map(|v| shader.vertex(v)).collect();
@@ -256,31 +286,103 @@ fn draw_tiles<S: Shader, C: ColorFormat>(
         }
         return stats;
     }
-    let clear = clear.map(C::store);
-    // Bin pieces to tiles in submission order.
-    let h = i64::from(target.height());
-    let tile = i64::from(TILE);
-    let tiles_x = i64::from(target.tiles_x());
-    let tiles_y = (h + tile - 1) / tile;
-    let mut bins: Vec<Vec<u32>> = vec![Vec::new(); (tiles_x * tiles_y) as usize];
-    // The union of each bin's pieces' boxes (clipped to its tile when used).
-    let mut extents = vec![[i64::MAX, i64::MAX, i64::MIN, i64::MIN]; bins.len()];
-    for (id, piece) in pieces.iter().enumerate() {
-        let b = piece.edge.bbox;
-        let (x0, y0) = (b[0].max(rect[0]), b[1].max(rect[1]));
-        let (x1, y1) = (b[2].min(rect[2]), b[3].min(rect[3]));
-        if x0 >= x1 || y0 >= y1 {
-            continue;
-        }
-        for ty in y0 / tile..=(y1 - 1) / tile {
-            for tx in x0 / tile..=(x1 - 1) / tile {
-                let index = (ty * tiles_x + tx) as usize;
-                bins[index].push(id as u32);
-                let e = &mut extents[index];
-                *e = [e[0].min(x0), e[1].min(y0), e[2].max(x1), e[3].max(y1)];
-            }
+    let mut bins = Bins::new(target, rect);
+    let mut clear = clear.map(C::store);
+    let mut next = 0;
+    while next < pieces.len() {
+        next = bins.fill(&pieces, next, max_entries);
+        debug_assert!(bins.entries <= max_entries.max(bins.pieces.len()));
+        stats += &draw_bins(target, clear, shader, state, &pieces, &bins);
+        // Later batches draw over the first one's clear.
+        clear = None;
+        bins.empty();
+    }
+    stats
+}
+
+/// Each tile's pieces, in submission order, and the union of their boxes.
+struct Bins {
+    /// The pixels a draw may write, `[x0, y0, x1, y1)`.
+    rect: [i64; 4],
+    tiles_x: i64,
+    /// Per tile, its pieces' indices.
+    pieces: Vec<Vec<u32>>,
+    /// Per tile, the union of its pieces' boxes (clipped to the tile when used).
+    extents: Vec<[i64; 4]>,
+    /// Entries in `pieces`.
+    entries: usize,
+}
+
+impl Bins {
+    fn new<C: ColorFormat>(target: &Framebuffer<C>, rect: [i64; 4]) -> Self {
+        let tile = i64::from(TILE);
+        let tiles_x = i64::from(target.tiles_x());
+        let tiles_y = (i64::from(target.height()) + tile - 1) / tile;
+        let count = (tiles_x * tiles_y) as usize;
+        Self {
+            rect,
+            tiles_x,
+            pieces: vec![Vec::new(); count],
+            extents: vec![[i64::MAX, i64::MAX, i64::MIN, i64::MIN]; count],
+            entries: 0,
         }
     }
+
+    /// Bins `pieces[first..]` in order until the next piece would take the entries past
+    /// `max_entries` (the first always goes in: one piece's entries are at most the tile count);
+    /// returns the index of the first piece not binned.
+    fn fill<V>(&mut self, pieces: &[Piece<V>], first: usize, max_entries: usize) -> usize {
+        let tile = i64::from(TILE);
+        let rect = self.rect;
+        for (id, piece) in pieces.iter().enumerate().skip(first) {
+            let b = piece.edge.bbox;
+            let (x0, y0) = (b[0].max(rect[0]), b[1].max(rect[1]));
+            let (x1, y1) = (b[2].min(rect[2]), b[3].min(rect[3]));
+            if x0 >= x1 || y0 >= y1 {
+                continue;
+            }
+            // Unsigned (the box is inside the target, so not negative): a shift.
+            let tile_of = |v: i64| (v as u64 / tile as u64) as i64;
+            let (tx0, ty0, tx1, ty1) = (tile_of(x0), tile_of(y0), tile_of(x1 - 1), tile_of(y1 - 1));
+            let entries = ((tx1 - tx0 + 1) * (ty1 - ty0 + 1)) as usize;
+            if self.entries > 0 && self.entries + entries > max_entries {
+                return id;
+            }
+            self.entries += entries;
+            for ty in ty0..=ty1 {
+                for tx in tx0..=tx1 {
+                    let index = (ty * self.tiles_x + tx) as usize;
+                    self.pieces[index].push(id as u32);
+                    let e = &mut self.extents[index];
+                    *e = [e[0].min(x0), e[1].min(y0), e[2].max(x1), e[3].max(y1)];
+                }
+            }
+        }
+        pieces.len()
+    }
+
+    /// Empties every bin, keeping its memory for the next batch.
+    fn empty(&mut self) {
+        for bin in &mut self.pieces {
+            bin.clear();
+        }
+        self.extents.fill([i64::MAX, i64::MAX, i64::MIN, i64::MIN]);
+        self.entries = 0;
+    }
+}
+
+/// The tiles' jobs for the pieces in `bins` (every tile when clearing, else those with work).
+fn draw_bins<S: Shader, C: ColorFormat>(
+    target: &mut Framebuffer<C>,
+    clear: Option<C::Sample>,
+    shader: &S,
+    state: &PipelineState,
+    pieces: &[Piece<S::Varying>],
+    bins: &Bins,
+) -> DrawStats {
+    let mut stats = DrawStats::default();
+    let (rect, tiles_x) = (bins.rect, bins.tiles_x);
+    let tile = i64::from(TILE);
     let pattern = target.pattern();
     let samples = target.samples();
     let tile_pixels = (TILE * TILE) as usize;
@@ -295,7 +397,7 @@ fn draw_tiles<S: Shader, C: ColorFormat>(
         .chunks_mut(tile_samples)
         .zip(target.depth.chunks_mut(tile_samples))
         .enumerate()
-        .filter(|(index, _)| clear.is_some() || !bins[*index].is_empty())
+        .filter(|(index, _)| clear.is_some() || !bins.pieces[*index].is_empty())
         .collect();
     let job = |(index, (color, depth)): TileJob<'_, C>| {
         let (tx, ty) = (index as i64 % tiles_x, index as i64 / tiles_x);
@@ -323,9 +425,9 @@ fn draw_tiles<S: Shader, C: ColorFormat>(
         if tile_target.mask.is_some_and(|m| !m.contains(&true)) {
             return stats;
         }
-        let bin = &bins[index];
+        let bin = &bins.pieces[index];
         if clear.is_none() {
-            tile_target.touch(extents[index]);
+            tile_target.touch(bins.extents[index]);
         }
         for (k, &id) in bin.iter().enumerate() {
             if let Some(&ahead) = bin.get(k + PREFETCH_AHEAD) {
@@ -355,3 +457,6 @@ fn draw_tiles<S: Shader, C: ColorFormat>(
     }
     stats
 }
+
+#[cfg(test)]
+mod tests;
