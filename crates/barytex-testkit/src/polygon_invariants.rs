@@ -344,10 +344,14 @@ pub fn check_polygon_coordinates(
     }
     if method == GeneralizedBarycentric::Wachspress {
         let Some((exact_weights, kappa)) = exact_wachspress(p, polygon) else {
-            return Err(format!(
-                "{}: Ok at a pole of the exact functions",
-                context()
-            ));
+            // At a pole there is no exact weight to compare with. The rounded normalising sum
+            // there is rounding noise, and only exactly 0 or non-finite makes it `Undefined`
+            // (floating point cannot tell a pole from the κ ≈ 7·10¹¹ of a hexagon 10⁶ sizes away):
+            // what the weights promise is what they promise wherever `d ≥ ½`, finiteness,
+            // partition of unity and linear precision, all checked above. (The input
+            // `fuzz/regressions/polygon/crash-4d08…`, an exact pole with weights of 10¹⁶,
+            // failed the former rule that a pole must give `Undefined`.)
+            return Ok(());
         };
         for (i, (w, e)) in weights.iter().zip(&exact_weights).enumerate() {
             let e64 = exact::to_f64(e);

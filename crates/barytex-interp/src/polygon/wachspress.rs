@@ -26,8 +26,11 @@ use crate::determinant::orient2d_det;
 /// are the affine coordinates along that edge (the functions' limit). Where the functions have a
 /// pole (their denominator `Σ wᵢ` vanishes, which happens on a curve outside every polygon of
 /// more than three vertices, or `p` is on the lines of two non-adjacent edges) the result is
-/// `Err(Undefined)`; near a pole the weights are large and only as accurate as the sum's
-/// condition number allows (see below).
+/// `Err(Undefined)` when `p` is on two edge lines or the rounded sum is 0; elsewhere on the
+/// curve the rounded sum is rounding noise rather than 0 (floating point cannot tell a pole
+/// from a point whose sum cancels to 12 digits), and the weights are those of any point with
+/// `d ≥ ½` below: finite, a partition of unity, linearly precise, no correct digit. Near a pole
+/// the weights are large and only as accurate as the sum's condition number allows.
 ///
 /// # Errors
 /// [`PolygonError::TooFewVertices`], [`WeightsLength`](PolygonError::WeightsLength),
@@ -36,7 +39,8 @@ use crate::determinant::orient2d_det;
 /// has the wrong sign *or is zero* (a vertex with collinear neighbours would get weight 0
 /// everywhere, so Wachspress needs strict convexity; use [`mean_value_weights`](super::mean_value_weights)),
 /// [`SelfIntersecting`](PolygonError::SelfIntersecting) for star polygons; and
-/// [`Undefined`](PolygonError::Undefined) at a pole outside the polygon. Convexity is checked
+/// [`Undefined`](PolygonError::Undefined) at a pole outside the polygon where rounding shows it
+/// (see above). Convexity is checked
 /// with exact orientation signs.
 ///
 /// # Accuracy
