@@ -67,7 +67,16 @@ impl Footprint {
         })
     }
 
-    /// Vulkan/D3D: `N = min(⌈major/minor⌉, max_anisotropy)` probes at `λ = log₂(major/N)`.
+    /// Vulkan/D3D: `N = min(⌈major/minor⌉, max_anisotropy)` probes, at
+    /// `λ = log₂ max(major/N, minor)`.
+    ///
+    /// The specifications' `λ = log₂(major/N)` (EXT_texture_filter_anisotropic) reads a level
+    /// finer than the minor axis whenever `major/minor` is not an integer (`N` rounds up): at
+    /// a ratio of 1.06 two probes sample a level one texel per probe where the footprint is 1.9
+    /// texels across, and the minor axis aliases — on rows alternating 0 and 1 the result was
+    /// 0.86 where the footprint averages 0.53 and one probe gave 0.50 (found by the property
+    /// test `more_probes_are_not_worse`). No probe's level is finer than the minor axis now;
+    /// where `N` is the ratio itself, or the clamp, the two formulas agree.
     pub(crate) fn probes(&self, max_anisotropy: f32) -> ProbePlan {
         let ratio = if self.minor_texels > 0.0 {
             (self.major_texels / self.minor_texels).ceil()
@@ -78,7 +87,7 @@ impl Footprint {
         ProbePlan {
             // count ∈ [1, 16].
             count: count as usize,
-            lod: (self.major_texels / count).log2(),
+            lod: (self.major_texels / count).max(self.minor_texels).log2(),
             major: self.major,
             spread: self.major_texels > 1.0,
         }
