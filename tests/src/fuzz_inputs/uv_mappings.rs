@@ -101,8 +101,7 @@ impl Mapping for Cylindrical {
         Some(self)
     }
     fn periodic(&self, n: Vec3) -> (bool, bool) {
-        let cap = self.caps() == CylinderCaps::Planar && n.y.abs() > n.x.hypot(n.z);
-        (!cap, false)
+        (!self.on_cap(n), false)
     }
 }
 

@@ -85,6 +85,29 @@ impl Cylindrical {
     pub const fn caps(&self) -> CylinderCaps {
         self.caps
     }
+
+    /// Whether a point with `normal` is mapped by a planar cap rather than the side: caps are
+    /// [`CylinderCaps::Planar`] and the normal is closer to ±y than to the side,
+    /// `|n_y| > √(n_x² + n_z²)`, decided in f64 (the rule every evaluation follows).
+    ///
+    /// ```
+    /// use barytex_uv::mappings::{CylinderCaps, Cylindrical};
+    /// use glam::Vec3;
+    ///
+    /// let c = Cylindrical::new(1.0, 2.0).expect("valid").with_caps(CylinderCaps::Planar);
+    /// assert!(c.on_cap(Vec3::Y));
+    /// assert!(!c.on_cap(Vec3::new(1.0, 0.9, 0.0)));
+    /// assert!(!Cylindrical::new(1.0, 2.0).expect("valid").on_cap(Vec3::Y));
+    /// ```
+    #[must_use]
+    pub fn on_cap(&self, normal: Vec3) -> bool {
+        self.on_cap_f64(normal.as_dvec3())
+    }
+
+    /// [`on_cap`](Self::on_cap) of an f64 normal.
+    fn on_cap_f64(&self, n: DVec3) -> bool {
+        self.caps == CylinderCaps::Planar && n.y.abs() > n.x.hypot(n.z)
+    }
 }
 
 impl UvMapping64 for Cylindrical {
@@ -92,7 +115,7 @@ impl UvMapping64 for Cylindrical {
         if !(p.is_finite() && normal.is_finite()) {
             return None;
         }
-        if self.caps == CylinderCaps::Planar && normal.y.abs() > normal.x.hypot(normal.z) {
+        if self.on_cap_f64(normal) {
             let k = 0.5 / self.radius;
             let sign = normal.y.signum();
             return Some(DUvJacobian {
@@ -117,8 +140,11 @@ impl PositionMapping for Cylindrical {
     /// `None` for non-finite input, a point on the axis (side mapping), or a result beyond f32;
     /// the side's `u` is in `[0, 1)`.
     fn uv_and_jacobian(&self, position: Vec3, normal: Vec3) -> Option<UvJacobian> {
-        let side =
-            !(self.caps == CylinderCaps::Planar && normal.y.abs() > normal.x.hypot(normal.z));
+        // The side's `u` wraps into [0, 1), a cap's does not: decided as the f64 evaluation
+        // decides. (An f32 test of the same rule disagreed with it on a normal 2·10⁻⁶ from the
+        // boundary, and a cap's u, −1e28, was taken for the side's; a cap's u ≥ 1 would have
+        // been reset to 0. Fuzz target `uv_mappings`.)
+        let side = !self.on_cap(normal);
         let j = self
             .uv_and_jacobian_f64(position.as_dvec3(), normal.as_dvec3())?
             .to_f32()?;
