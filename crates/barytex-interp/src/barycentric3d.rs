@@ -61,13 +61,16 @@ impl Barycentric3d {
 /// within `1 ulp + 2⁻⁴⁶·κ` of the exact rational weight of the projected point,
 /// `κ = max(|p|, |a|, |b|, |c|) · max edge length / |2·area|`. A weight computed beyond f32's
 /// range is an infinity of its sign when its exact value is beyond that range too (the
-/// computed value exceeds `f32::MAX` by more than `2⁻⁴⁸·κ`), else `±f32::MAX`, within the
+/// computed value exceeds `f32::MAX` by more than `2⁻⁴⁷·κ`), else `±f32::MAX`, within the
 /// bound of any exact value the error allows. Derivation: the weight of `a` is computed as
-/// `((b − p) × (c − b))·n / |n|²` in f64 from the exact f32 inputs; its numerator's rounding
-/// error is at most `8·2⁻⁵³·|b − p|·|c − b|·|n|`, so the weight's is at most
-/// `16·2⁻⁵³·κ = 2⁻⁴⁹·κ` before the final rounding to f32, and `n`'s own `2⁻³⁰` relative error
-/// moves the weight by less than an ulp (tests `barycentric_3d_within_bar`,
-/// `slivers_3d_within_bar` and `far_points_within_bar`).
+/// `((b − p) × (c − b))·n / |n|²` in f64 from the exact f32 inputs, with `v = (b − p) × (c − b)`,
+/// `|v|/|n| ≤ 2κ`. The numerator's rounding error is at most `8·2⁻⁵³·|v|·|n|`, which is
+/// `2⁻⁴⁹·κ` of the weight; `n`'s components are within `2⁻⁵⁰` relative, which moves `v·n` by
+/// at most `2⁻⁵⁰·|v|·|n|` (another `2⁻⁴⁹·κ`: off the plane `v` is not parallel to `n`, so the
+/// direction counts, not only the length) and `|n|²` by `2⁻⁴⁹` relative (at most `2⁻⁴⁸·κ`, the
+/// weight being at most `2κ`): at most `2⁻⁴⁷·κ` before the final rounding to f32 (tests
+/// `barycentric_3d_within_bar`, `slivers_3d_within_bar` and `far_points_within_bar`; the fuzz
+/// target `interp_3d` found a point off the plane where a `2⁻³⁰`-accurate `n` broke the bound).
 ///
 /// ```
 /// use barytex_interp::barycentric_3d;
@@ -85,10 +88,13 @@ pub fn barycentric_3d(p: Vec3, tri: [Vec3; 3]) -> Result<Barycentric3d, InterpEr
         return Err(InterpError::NonFinite { what: "triangle" });
     }
     // Each component of n = (b − a) × (c − a) is the orientation determinant of the triangle's
-    // projection onto a coordinate plane: exact in sign, 2⁻³⁰ relative, so `n = 0` exactly when
+    // projection onto a coordinate plane: exact in sign, 2⁻⁵⁰ relative, so `n = 0` exactly when
     // the vertices are collinear (a rounded f64 cross product of rounded differences is not).
+    // 2⁻³⁰, as the 2D predicates use, is not enough here: off the plane the numerator's vector
+    // is far from parallel to n, and an error in n's direction moved a weight of 2e10 by 5e5
+    // (fuzz target `interp_3d`, inputs from 1e-44 to 1e-26).
     let [a32, b32, c32] = tri;
-    let det = crate::determinant::orient2d_det;
+    let det = crate::determinant::orient2d_det_precise;
     let n = DVec3::new(
         det(a32.yz(), b32.yz(), c32.yz()),
         det(a32.zx(), b32.zx(), c32.zx()),
@@ -112,19 +118,19 @@ pub fn barycentric_3d(p: Vec3, tri: [Vec3; 3]) -> Result<Barycentric3d, InterpEr
     })
 }
 
-/// 2⁻⁴⁸ (`powi` is not in `core`).
-const TWO_POW_MINUS_48: f64 = 1.0 / (1_u64 << 48) as f64;
+/// 2⁻⁴⁷ (`powi` is not in `core`).
+const TWO_POW_MINUS_47: f64 = 1.0 / (1_u64 << 47) as f64;
 
 /// `w as f32`, except that a finite `w` beyond f32's range whose exact value may be within it
-/// (`|w| − 2⁻⁴⁸·κ ≤ f32::MAX`, twice the f64 error bound `2⁻⁴⁹·κ`, the margin covering κ's
-/// own rounding) becomes `±f32::MAX`: an infinity there would be infinitely far from a finite
-/// exact weight, `f32::MAX` is within `3·2⁻⁴⁹·κ` of it. Found by the fuzz target `interp_3d`:
+/// (`|w| − 2⁻⁴⁷·κ ≤ f32::MAX`, `2⁻⁴⁷·κ` the f64 error bound) becomes `±f32::MAX`: an infinity
+/// there would be infinitely far from a finite exact weight, `f32::MAX` is within `2⁻⁴⁶·κ` of
+/// it. Found by the fuzz target `interp_3d`:
 /// a weight of exact value 3.8e37 computed as 3.5e38 (κ ≈ 2¹⁸⁰) was an infinity.
 fn to_f32_saturating(w: f64, kappa: impl FnOnce() -> f64) -> f32 {
     let rounded = w as f32;
     if rounded.is_infinite()
         && w.is_finite()
-        && w.abs() - kappa() * TWO_POW_MINUS_48 <= f64::from(f32::MAX)
+        && w.abs() - kappa() * TWO_POW_MINUS_47 <= f64::from(f32::MAX)
     {
         return f32::MAX.copysign(rounded);
     }

@@ -25,6 +25,17 @@ pub(crate) fn orient2d_det(a: Vec2, b: Vec2, c: Vec2) -> f64 {
     filtered_cross(b, a, c, a, FAST_PATH_FACTOR)
 }
 
+/// The tighter filter of [`orient2d_det_precise`]: relative error below 2⁻⁵⁰.
+const PRECISE_FACTOR: f64 = (1u64 << 50) as f64 * CCW_ERRBOUND_A;
+
+/// [`orient2d_det`] within `2⁻⁵⁰` relative of the exact determinant: where a determinant's
+/// error is not relative to a result that uses it alone (the normal of `barycentric_3d`, whose
+/// direction error is multiplied by a point's distance from the plane).
+#[inline]
+pub(crate) fn orient2d_det_precise(a: Vec2, b: Vec2, c: Vec2) -> f64 {
+    filtered_cross(b, a, c, a, PRECISE_FACTOR)
+}
+
 /// `(b − a) × (c − a)` for finite f32 points with an exact sign; the value may be inaccurate
 /// when the sign alone was certain. The filter is Shewchuk's plain bound, so near-collinear
 /// points reach the exact sum only when even the sign is in doubt.
