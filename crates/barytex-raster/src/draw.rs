@@ -300,6 +300,9 @@ fn draw_batched<S: Shader, C: ColorFormat>(
     stats
 }
 
+/// The union of no boxes: any box's union with it is that box.
+const NO_EXTENT: [i64; 4] = [i64::MAX, i64::MAX, i64::MIN, i64::MIN];
+
 /// Each tile's pieces, in submission order, and the union of their boxes.
 struct Bins {
     /// The pixels a draw may write, `[x0, y0, x1, y1)`.
@@ -323,7 +326,7 @@ impl Bins {
             rect,
             tiles_x,
             pieces: vec![Vec::new(); count],
-            extents: vec![[i64::MAX, i64::MAX, i64::MIN, i64::MIN]; count],
+            extents: vec![NO_EXTENT; count],
             entries: 0,
         }
     }
@@ -366,7 +369,7 @@ impl Bins {
         for bin in &mut self.pieces {
             bin.clear();
         }
-        self.extents.fill([i64::MAX, i64::MAX, i64::MIN, i64::MIN]);
+        self.extents.fill(NO_EXTENT);
         self.entries = 0;
     }
 }
