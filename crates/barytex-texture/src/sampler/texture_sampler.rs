@@ -378,6 +378,60 @@ impl<T: Texel> TextureSampler<T> {
         }
     }
 
+    /// The mean of the plan's probes at a (biased, clamped) level of detail, premultiplied:
+    /// `Σᵢ at_lod_premultiplied(uv + offset(i), lod) / count`, with the kernel and the two
+    /// levels chosen once for all probes rather than once a probe (the same operations on
+    /// each probe, in the same order: the same values).
+    fn probes_premultiplied(&self, uv: Vec2, plan: &anisotropic::ProbePlan, lod: f32) -> Vec4 {
+        let AtLod::ResolvedTrilinear { opaque, clamp } = self.at_lod else {
+            let mut sum = Vec4::ZERO;
+            for i in 0..plan.count {
+                sum += self.filter_premultiplied(uv + plan.offset(i), lod);
+            }
+            return sum / plan.count as f32;
+        };
+        match (opaque, clamp) {
+            (true, [false, false]) => self.probes_resolved::<true, false, false>(uv, plan, lod),
+            (true, [false, true]) => self.probes_resolved::<true, false, true>(uv, plan, lod),
+            (true, [true, false]) => self.probes_resolved::<true, true, false>(uv, plan, lod),
+            (true, [true, true]) => self.probes_resolved::<true, true, true>(uv, plan, lod),
+            (false, [false, false]) => self.probes_resolved::<false, false, false>(uv, plan, lod),
+            (false, [false, true]) => self.probes_resolved::<false, false, true>(uv, plan, lod),
+            (false, [true, false]) => self.probes_resolved::<false, true, false>(uv, plan, lod),
+            (false, [true, true]) => self.probes_resolved::<false, true, true>(uv, plan, lod),
+        }
+    }
+
+    /// [`probes_premultiplied`](Self::probes_premultiplied) through one resolved kernel:
+    /// [`resolved_at`](Self::resolved_at) per probe with the levels chosen once.
+    #[inline(always)]
+    fn probes_resolved<const OPAQUE: bool, const CLAMP_U: bool, const CLAMP_V: bool>(
+        &self,
+        uv: Vec2,
+        plan: &anisotropic::ProbePlan,
+        lod: f32,
+    ) -> Vec4 {
+        let levels = self.chain.levels();
+        let (lo, hi, t) = linear_levels(lod, levels.len() - 1);
+        let kernel = level_filters::bilinear_resolved::<T, OPAQUE, CLAMP_U, CLAMP_V>;
+        let same = hi == lo;
+        let (lo, hi) = (&levels[lo], &levels[hi]);
+        let mut sum = Vec4::ZERO;
+        if same {
+            for i in 0..plan.count {
+                sum += kernel(lo, uv + plan.offset(i));
+            }
+        } else {
+            for i in 0..plan.count {
+                let p = uv + plan.offset(i);
+                let a = kernel(lo, p);
+                let b = kernel(hi, p);
+                sum += a + (b - a) * t;
+            }
+        }
+        sum / plan.count as f32
+    }
+
     /// `across_levels` for [`AtLod::ResolvedTrilinear`] written out (below λ = 0 the linear
     /// level choice gives level 0 alone, as magnification does): premultiplied.
     #[inline(always)]
@@ -412,11 +466,7 @@ impl<T: Texel> TextureSampler<T> {
                         if plan.count == 1 || !plan.spread {
                             unpremultiply(self.at_lod_premultiplied(uv, lod))
                         } else {
-                            let mut sum = Vec4::ZERO;
-                            for i in 0..plan.count {
-                                sum += self.at_lod_premultiplied(uv + plan.offset(i), lod);
-                            }
-                            unpremultiply(sum / plan.count as f32)
+                            unpremultiply(self.probes_premultiplied(uv, &plan, lod))
                         }
                     }
                     AnisotropicFilter::Ewa => {
