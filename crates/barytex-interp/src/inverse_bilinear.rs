@@ -128,25 +128,33 @@ pub fn inverse_bilinear_2d(p: Vec2, quad: [Vec2; 4]) -> Result<InverseBilinear, 
 ///
 /// The corners and the point are projected onto a plane where the quad is convex, then solved as
 /// [`inverse_bilinear_2d`]. For a planar quad (or a nearly planar one) that plane is the one
-/// spanned by the diagonals; when that projection is not convex, Buss's choice is used: the
-/// plane perpendicular to the line joining the midpoints of the diagonals, on which the
-/// projection of a non-planar quad is always convex (Denisjuk, Corollary 12), so the inverse is
-/// exact for every point on the bilinear surface. A point off the surface gets the preimage of its
-/// projection.
+/// spanned by the diagonals; when that projection is not convex, or is convex with a smaller
+/// smallest turn, Buss's choice is used: the plane perpendicular to the line joining the
+/// midpoints of the diagonals, on which the projection of a non-planar quad is always convex
+/// (Denisjuk, Corollary 12), so the inverse is exact for every point on the bilinear surface. A
+/// point off the surface gets the preimage of its projection; a point within `2⁻²⁴·|p|` (the
+/// f32 rounding of a point on the surface) of an edge is on that edge, so inside.
 ///
 /// # Errors
 /// As [`inverse_bilinear_2d`]; [`InterpError::DegenerateQuad`] also when both diagonals are
 /// parallel and the quad is planar.
 ///
 /// # Accuracy
-/// For a point on the bilinear surface (given as its f32 rounding) of a quad from planar to
-/// saddle-shaped, the answer includes a preimage in `[0, 1]²` that maps back within
-/// `1e-6·diameter` of the point and, on well-shaped quads (a convex quad with one corner lifted
-/// by up to its size, any rotation, scales 2⁻⁶⁰ … 2⁶⁰), lies within `2e-5` of the true `(α, β)`
-/// (measured: 2.4e-8·diameter and 6.0e-8). Not the 2D bound: the projection's coefficients are
-/// plain f64, without the exact signs of [`inverse_bilinear_2d`] (tests
-/// `inverse_bilinear_3d_round_trip_non_planar`, `inverse_bilinear_3d_planar` and
-/// `inverse_bilinear_3d_from_planar_to_saddle_at_any_scale`).
+/// For a point on the bilinear surface (given as its f32 rounding `p`, edges included) of a quad
+/// from planar to saddle-shaped, the answer includes a preimage in `[0, 1]²` that maps back
+/// within `1e-6·diameter + 2⁻²⁴·|p|` of the point (the second term is the point's own rounding,
+/// which no preimage can undo: it matters only far from the origin) and, on well-shaped quads (a
+/// convex quad with one corner lifted by up to its size, any rotation, scales 2⁻⁶⁰ … 2⁶⁰), lies
+/// within `2e-5` of the true `(α, β)` (measured: 2.4e-8·diameter and 6.0e-8). A planar convex
+/// quad of condition number `κ` (as in [`inverse_bilinear_2d`], of the quad in its plane), at
+/// any offset: within `3e-7·(1 + κ)·(1 + |p|/diameter)` of the true `(α, β)` (the rounding of
+/// `p`, relative to `|p|`, amplified by the shape; measured at most 0.09 of that on 900 000
+/// `convex_quad` draws, κ up to 7e7, edges included). Not the 2D bound: the projection's
+/// coefficients are plain f64, without the exact signs of [`inverse_bilinear_2d`] (tests
+/// `inverse_bilinear_3d_round_trip_non_planar`, `inverse_bilinear_3d_planar`,
+/// `inverse_bilinear_3d_from_planar_to_saddle_at_any_scale`,
+/// `rounded_edge_point_of_a_planar_sliver_in_3d_is_inside` and
+/// `saddle_point_next_to_a_nearly_folded_corner_of_the_diagonal_projection`).
 ///
 /// ```
 /// use barytex_interp::{bilinear, inverse_bilinear_3d, InverseBilinear};
@@ -170,33 +178,98 @@ pub fn inverse_bilinear_3d(p: Vec3, quad: [Vec3; 4]) -> Result<InverseBilinear, 
         return Err(InterpError::NonFinite { what: "quad" });
     }
     let origin = quad[0].as_dvec3();
+    // How far the f32 rounding of a point on the surface may be from it: half an ulp per
+    // component, at most 2⁻²⁴ of its magnitude (2⁻¹⁵⁰ for a subnormal). The 2⁻⁴⁸ term covers
+    // that the bound is stated for the exact point, and the f64 rounding of the translation and
+    // of the distance to an edge (a few units of 2⁻⁵³ of the coordinates).
+    let magnitude = p.as_dvec3().length();
+    let corners = quad
+        .iter()
+        .map(|c| c.as_dvec3().length())
+        .fold(0.0, f64::max);
+    let rounding =
+        F32_HALF_ULP * magnitude + EVALUATION * (magnitude + corners) + SUBNORMAL_HALF_ULP;
     let p = p.as_dvec3() - origin;
     let q = quad.map(|c| c.as_dvec3() - origin);
+    match solve_3d(p, q) {
+        // The f32 rounding of a point on an edge may fall just outside the quad: on a sliver that
+        // is far beyond `INSIDE_SLACK` in the parameters (α = −7e-6 on one of κ ≈ 500). It is on
+        // the edge within that rounding, so it is inside, at the edge's nearest point.
+        Ok(InverseBilinear::Outside(nearest)) => Ok(nearest_edge_point(p, q, rounding)
+            .map_or(InverseBilinear::Outside(nearest), InverseBilinear::Inside)),
+        other => other,
+    }
+}
+
+/// 2⁻²⁴: half an f32 ulp relative to the value (normal range).
+const F32_HALF_ULP: f64 = 1.0 / (1u64 << 24) as f64;
+/// Half the smallest f32 subnormal (2⁻¹⁵⁰), times √3 rounded up to 2: three components.
+const SUBNORMAL_HALF_ULP: f64 = f32::from_bits(1) as f64;
+/// 2⁻⁴⁸, relative to the coordinates: the f64 evaluation of a distance (and 2⁻²⁴ of 2⁻²⁴).
+const EVALUATION: f64 = 1.0 / (1u64 << 48) as f64;
+
+/// The `(α, β)` of the point on the quad's boundary nearest to `p`, if it is within `tolerance`.
+/// The edges of a bilinear surface are the straight segments `α = 0` (x–w), `α = 1` (y–z),
+/// `β = 0` (x–y) and `β = 1` (w–z).
+fn nearest_edge_point(p: DVec3, [x, y, z, w]: [DVec3; 4], tolerance: f64) -> Option<Vec2> {
+    let edges = [(x, w), (y, z), (x, y), (w, z)];
+    let mut best: Option<(f64, DVec2)> = None;
+    for (edge, (start, end)) in edges.into_iter().enumerate() {
+        let d = end - start;
+        let den = d.length_squared();
+        let t = if den == 0.0 {
+            0.0
+        } else {
+            ((p - start).dot(d) / den).clamp(0.0, 1.0)
+        };
+        let distance = (start + d * t - p).length();
+        if distance <= tolerance && best.is_none_or(|(b, _)| distance < b) {
+            let ab = match edge {
+                0 => DVec2::new(0.0, t),
+                1 => DVec2::new(1.0, t),
+                2 => DVec2::new(t, 0.0),
+                _ => DVec2::new(t, 1.0),
+            };
+            best = Some((distance, ab));
+        }
+    }
+    best.map(|(_, ab)| ab.as_vec2())
+}
+
+/// [`inverse_bilinear_3d`] for the translated point and corners, before the boundary check.
+fn solve_3d(p: DVec3, q: [DVec3; 4]) -> Result<InverseBilinear, InterpError> {
     let diagonal_normal = (q[2] - q[0]).cross(q[3] - q[1]);
     let midpoint_normal = (q[1] + q[3] - q[0] - q[2]) * 0.5;
-    let solve_in = |normal: DVec3| {
+    let project = |normal: DVec3| {
         let frame = Frame::perpendicular_to(normal)?;
-        let projected = q.map(|c| frame.project(c));
-        let u = frame.project(p);
-        let result = solve(
+        Some((frame.project(p), q.map(|c| frame.project(c))))
+    };
+    let solve_in = |(u, projected): (DVec2, [DVec2; 4])| {
+        solve(
             u,
             projected,
             coefficients(u, projected),
             is_flat_f64(projected),
-        );
-        Some((result, is_strictly_convex(projected)))
+        )
     };
-    // The diagonals' plane first (it is the quad's own plane when the quad is planar); Buss's
-    // plane only when that projection folds. A planar quad that folds is answered in its own
-    // plane, like `inverse_bilinear_2d` would.
-    let first = solve_in(diagonal_normal);
-    if let Some((result, true)) = first {
-        return result;
+    let diagonal = project(diagonal_normal);
+    let midpoint = project(midpoint_normal);
+    // Of the two planes, the one where the projection is convex with the larger smallest turn
+    // (both projections are orthogonal, so their turns compare): the diagonals' plane for a
+    // planar or nearly planar quad (it is the quad's own plane; Buss's plane there squashes the
+    // quad towards a line), Buss's plane when the diagonals' projection folds or nearly folds at
+    // a corner (a saddle whose diagonal projection turns 0.17 at one corner and 8 … 32 at the
+    // others lost 3e-6 in β next to that corner). A planar quad that folds in both is answered
+    // in its own plane, like `inverse_bilinear_2d` would.
+    let margin = |projection: Option<(DVec2, [DVec2; 4])>| {
+        projection.and_then(|(_, projected)| convexity_margin(projected))
+    };
+    match (margin(diagonal), margin(midpoint), diagonal, midpoint) {
+        (Some(d), Some(m), _, Some(buss)) if m > d => solve_in(buss),
+        (Some(_), _, Some(own), _) | (None, None, Some(own), _) => solve_in(own),
+        (None, Some(_), _, Some(buss)) => solve_in(buss),
+        _ => Err(InterpError::DegenerateQuad),
     }
-    if let Some((result, true)) = solve_in(midpoint_normal) {
-        return result;
-    }
-    first.map_or(Err(InterpError::DegenerateQuad), |(result, _)| result)
 }
 
 /// An orthonormal basis of the plane perpendicular to a normal.
@@ -217,10 +290,12 @@ impl Frame {
     }
 }
 
-fn is_strictly_convex(q: [DVec2; 4]) -> bool {
+/// The smallest turn of a strictly convex quad (`None` when it is not strictly convex).
+fn convexity_margin(q: [DVec2; 4]) -> Option<f64> {
     let turns: [f64; 4] =
         core::array::from_fn(|i| (q[(i + 1) % 4] - q[i]).perp_dot(q[(i + 2) % 4] - q[(i + 1) % 4]));
-    turns.iter().all(|&t| t > 0.0) || turns.iter().all(|&t| t < 0.0)
+    let convex = turns.iter().all(|&t| t > 0.0) || turns.iter().all(|&t| t < 0.0);
+    convex.then(|| turns.iter().fold(f64::INFINITY, |m, t| m.min(t.abs())))
 }
 
 /// The coefficients `[A, B, C]` of the quadratic in β, in plain f64 (for the projected 3D quad).

@@ -185,16 +185,28 @@ proptest! {
     }
 
     /// A planar quad embedded in 3D (rotated, then rounded to f32, so very slightly non-planar)
-    /// inverts like the 2D quad.
+    /// inverts like the 2D quad, within `inverse_bilinear_3d`'s documented bounds: a preimage in
+    /// [0,1]² (points on an edge included) that maps back within `1e-6·diameter` beyond the
+    /// point's own f32 rounding (`2⁻²⁴·|p|`), and within `3e-7·(1 + κ)·(1 + |p|/diameter)` of
+    /// `(a, b)`. Not a fixed `1e-5`: the f32 rounding of `p`, relative to `|p|`, not the quad's
+    /// size, moves the preimage by up to κ/diameter times itself, and `convex_quad` draws slivers
+    /// (κ up to 7e7) at offsets up to 5 (a κ ≈ 500 sliver at offset −3 was 1.25e-5 off).
     #[test]
     fn inverse_bilinear_3d_planar(quad in convex_quad(), a in 0.0f32..=1.0, b in 0.0f32..=1.0) {
         let rot = glam::Quat::from_euler(glam::EulerRot::XYZ, 0.3, -1.1, 0.7);
         let q3 = quad.map(|v| rot * v.extend(0.0));
-        let p = bilinear(q3.map(|v| v.as_dvec3()), a, b).as_vec3();
+        let q64 = q3.map(|v| v.as_dvec3());
+        let p = bilinear(q64, a, b).as_vec3();
         let v = inverse_bilinear_3d(p, q3).unwrap().inside();
-        prop_assert!(v.is_some());
+        prop_assert!(v.is_some(), "({a}, {b}) not inside");
         let v = v.unwrap();
-        prop_assert!((v - Vec2::new(a, b)).abs().max_element() <= 1e-5, "{v:?} vs ({a}, {b})");
+        let diameter = q64.iter().flat_map(|x| q64.iter().map(move |y| (*x - *y).length())).fold(0.0, f64::max);
+        let magnitude = p.as_dvec3().length();
+        let residual = (bilinear(q64, v.x, v.y) - p.as_dvec3()).length();
+        prop_assert!(residual <= 1e-6 * diameter + magnitude / f64::from(1u32 << 24), "{v:?} maps {residual:e} away");
+        let bound = 3e-7 * (1.0 + quad_condition(quad)) * (1.0 + magnitude / diameter);
+        let err = f64::from((v - Vec2::new(a, b)).abs().max_element());
+        prop_assert!(err <= bound, "{v:?} vs ({a}, {b}): {err:e} > {bound:e}");
     }
 
     #[test]
@@ -584,4 +596,63 @@ fn convex_quad_sample_condition() {
         kappas[50_000], kappas[99_000], kappas[99_999]
     );
     assert!(kappas[0] >= 1.0);
+}
+
+/// Regression (`inverse_bilinear_3d_planar`, seed `78e69217…`): the `convex_quad` sliver
+/// `[(-0.04119272, 5.284682), (-0.13864845, 4.48744), (-0.24657917, 3.594275),
+/// (-0.32171214, 2.8610191)]` (κ ≈ 500) rotated into 3D, and the f32 rounding of its point at
+/// `(α, β) = (0, 0.187223)`, on the edge x–w. The rounding put the point just outside that edge,
+/// which in the projection is α = −7.0e-6, a thousand times the solver's slack: the answer was
+/// `Outside`. Within the rounding of an edge point, it is on the edge: inside.
+#[test]
+fn rounded_edge_point_of_a_planar_sliver_in_3d_is_inside() {
+    let bits = |b: [u32; 3]| Vec3::from_array(b.map(f32::from_bits));
+    let quad = [
+        [3_217_522_340, 1_083_684_432, 3_219_034_185],
+        [3_215_851_703, 1_082_058_548, 3_217_565_634],
+        [3_213_976_418, 1_078_498_234, 3_215_911_558],
+        [3_211_958_461, 1_075_598_746, 3_214_458_500],
+    ]
+    .map(bits);
+    let p = bits([3_216_562_882, 1_082_782_047, 3_218_177_512]);
+    let b = f32::from_bits(1_044_363_107); // 0.187223
+    let result = inverse_bilinear_3d(p, quad).unwrap();
+    let Some(ab) = result.inside() else {
+        panic!("{result:?}");
+    };
+    assert_eq!(ab.x, 0.0, "{result:?}");
+    assert!((ab.y - b).abs() <= 1e-6, "{result:?}");
+}
+
+/// Regression (`inverse_bilinear_3d_round_trip_non_planar`, seed `e6a822f6…`): a saddle whose
+/// projection onto the diagonals' plane is convex but turns only 0.17 at corner z (8 … 32 at
+/// the others); solved there, the point at `(0.9944296, 0.99847895)`, next to z, came back 3e-6
+/// off in β and mapped 4.7e-5 (3.4e-6·diameter) away. Buss's plane (turns all 15.9) gets it right.
+#[test]
+fn saddle_point_next_to_a_nearly_folded_corner_of_the_diagonal_projection() {
+    let bits = |b: [u32; 3]| Vec3::from_array(b.map(f32::from_bits));
+    let quad = [
+        [1_091_716_242, 3_201_920_361, 3_204_739_860],
+        [1_060_045_088, 3_239_145_050, 1_087_180_279],
+        [1_084_924_620, 3_226_397_633, 3_226_903_677],
+        [1_055_541_346, 3_221_143_859, 1_091_680_648],
+    ]
+    .map(bits);
+    let p = bits([1_084_853_081, 3_226_405_693, 3_226_550_936]);
+    let (a, b) = (0.994_429_6_f32, 0.998_478_95_f32);
+    let q64 = quad.map(|v| v.as_dvec3());
+    let diameter = q64
+        .iter()
+        .flat_map(|x| q64.iter().map(move |y| (*x - *y).length()))
+        .fold(0.0, f64::max);
+    let result = inverse_bilinear_3d(p, quad).unwrap();
+    let InverseBilinear::Inside(ab) = result else {
+        panic!("{result:?}");
+    };
+    let residual = (bilinear(q64, ab.x, ab.y) - p.as_dvec3()).length();
+    assert!(residual <= 1e-6 * diameter, "{result:?}: {residual:e}");
+    assert!(
+        (ab - Vec2::new(a, b)).abs().max_element() <= 1e-6,
+        "{result:?}"
+    );
 }
