@@ -188,7 +188,7 @@ impl MaterialShader<'_> {
                 _ => None,
             };
             if let Some(mapped) = sample.and_then(|s| slot.mapping.transform_sample(&s)) {
-                base *= texture.sample_uv(&mapped);
+                base *= texture.sample_base(&mapped);
             }
         }
         let alpha = coverage_alpha(m.alpha_mode, base.w)?;

@@ -42,6 +42,19 @@ impl PreparedTexture {
     }
 }
 
+impl PreparedTexture {
+    /// [`sample`](Self::sample) through `mapped` with an 8-bit sRGB texture's lookup inlined
+    /// into the caller (the base colour's format in nearly every file; the unlit fragment
+    /// loop's one lookup); other formats through the call.
+    #[inline(always)]
+    pub(crate) fn sample_base(&self, mapped: &barytex_uv::UvSample) -> Vec4 {
+        match self {
+            Self::Srgba8(s) => s.sample(mapped.uv, mapped.duvdx, mapped.duvdy),
+            other => other.sample(mapped.uv, mapped.duvdx, mapped.duvdy),
+        }
+    }
+}
+
 impl barytex_texture::Sampler for PreparedTexture {
     fn sample(&self, uv: Vec2, ddx: Vec2, ddy: Vec2) -> Vec4 {
         Self::sample(self, uv, ddx, ddy)
