@@ -171,7 +171,7 @@ impl MaterialShader<'_> {
     /// texture × vertex colour, and the alpha mode. The same values as the general path, which
     /// builds the whole surface point and both sets' derivatives; this reads only the base
     /// texture's set and its derivatives (the unlit frame's fragment loop, issue 19).
-    #[inline]
+    #[inline(always)]
     fn unlit(&self, f: &Fragment<'_, Surface>) -> Option<Vec4> {
         let m = &self.material;
         let s = &f.varying;
@@ -272,10 +272,22 @@ impl Shader for MaterialShader<'_> {
         (self.view_projection * position.extend(1.0), surface)
     }
 
+    /// The unlit short path inline (small: the rasterizer's pixel loop can inline it), the
+    /// general one through a call.
+    #[inline]
     fn fragment(&self, f: &Fragment<'_, Surface>) -> Option<Vec4> {
         if !self.material.lit && self.fog.is_none() && !self.interpolate_all {
-            return self.unlit(f);
+            self.unlit(f)
+        } else {
+            self.general(f)
         }
+    }
+}
+
+impl MaterialShader<'_> {
+    /// [`fragment`](Shader::fragment) for every material and shading frequency.
+    #[inline(never)]
+    fn general(&self, f: &Fragment<'_, Surface>) -> Option<Vec4> {
         let s = f.varying;
         let m = &self.material;
         let needs_derivatives = m.base_texture.is_some()
