@@ -274,7 +274,7 @@ impl Shader for MaterialShader<'_> {
 
     /// The unlit short path inline (small: the rasterizer's pixel loop can inline it), the
     /// general one through a call.
-    #[inline]
+    #[inline(always)]
     fn fragment(&self, f: &Fragment<'_, Surface>) -> Option<Vec4> {
         if !self.material.lit && self.fog.is_none() && !self.interpolate_all {
             self.unlit(f)
