@@ -7,6 +7,7 @@ use barytex_tests::fuzz_inputs::gltf_loader::{GLTF_LEN, check_gltf_loader, gltf_
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
+    barytex_tests::fuzz_inputs::decoder_panics::let_dependency_panics_unwind();
     let bytes = &data[..data.len().min(GLTF_LEN)];
     if let Err(message) = check_gltf_loader(bytes) {
         panic!("{message}\ninput:\n{}", gltf_loader_code(bytes));

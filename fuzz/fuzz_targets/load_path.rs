@@ -8,6 +8,7 @@ use barytex_tests::fuzz_inputs::load_path::{LOAD_PATH_LEN, check_load_path, load
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
+    barytex_tests::fuzz_inputs::decoder_panics::let_dependency_panics_unwind();
     let bytes = &data[..data.len().min(LOAD_PATH_LEN)];
     if let Err(message) = check_load_path(bytes) {
         panic!("{message}\ninput:\n{}", load_path_code(bytes));

@@ -10,6 +10,7 @@ use barytex_tests::fuzz_inputs::png_jpeg_loader::{
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
+    barytex_tests::fuzz_inputs::decoder_panics::let_dependency_panics_unwind();
     let bytes = &data[..data.len().min(PNG_JPEG_LEN)];
     if let Err(message) = check_png_jpeg_loader(bytes) {
         panic!("{message}\ninput:\n{}", png_jpeg_loader_code(bytes));

@@ -10,6 +10,7 @@ use barytex_tests::fuzz_inputs::render_options::{
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
+    barytex_tests::fuzz_inputs::decoder_panics::let_dependency_panics_unwind();
     let bytes = &data[..data.len().min(RENDER_OPTIONS_LEN)];
     if let Err(message) = check_render_options(bytes) {
         panic!("{message}\ninput:\n{}", render_options_code(bytes));

@@ -99,7 +99,8 @@ impl AnyTexture2d {
 ///
 /// # Errors
 /// [`TextureError::TooLarge`] or [`TextureError::Empty`] for refused dimensions,
-/// [`TextureError::Decode`] for an unknown format or a corrupt file.
+/// [`TextureError::Decode`] for an unknown format or a corrupt file (also when the decoder
+/// panics on it: the panic is caught, the message is [`DECODER_PANIC`]).
 ///
 /// ```
 /// use barytex_texture::load::{AnyTexture2d, ColorSpace, encode_png, load_from_memory};
@@ -125,6 +126,30 @@ impl AnyTexture2d {
 /// # Ok::<(), TextureError>(())
 /// ```
 pub fn load_from_memory(
+    bytes: &[u8],
+    color_space: ColorSpace,
+    limits: &Limits,
+) -> Result<AnyTexture2d, TextureError> {
+    guarded(|| decode(bytes, color_space, limits))
+}
+
+/// The message of the [`TextureError::Decode`] a decoder's panic becomes (see [`guarded`]).
+pub const DECODER_PANIC: &str =
+    "the image decoder failed on this file (it panicked: a decoder bug, caught)";
+
+/// Runs `f`, which calls third-party decoders, with a panic becoming
+/// [`TextureError::Decode`]`(`[`DECODER_PANIC`]`)`: files are untrusted input, and a decoder's
+/// bug must not take the caller down. zune-jpeg (the `image` crate's JPEG decoder, 0.5.15)
+/// panics in its AVX2 inverse DCT on some corrupt files (an `unwrap` of an out-of-range block
+/// slice; zune-image issue #361, open), which the fuzz target `png_jpeg_loader` found. The
+/// panic's message is not kept: it names decoder internals, not the file.
+fn guarded<T>(f: impl FnOnce() -> Result<T, TextureError>) -> Result<T, TextureError> {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f))
+        .unwrap_or_else(|_| Err(TextureError::Decode(DECODER_PANIC.to_owned())))
+}
+
+/// [`load_from_memory`] without its guard.
+fn decode(
     bytes: &[u8],
     color_space: ColorSpace,
     limits: &Limits,
@@ -187,6 +212,11 @@ pub fn decoded_size(
     bytes: &[u8],
     color_space: ColorSpace,
 ) -> Result<(u32, u32, u64), TextureError> {
+    guarded(|| header_size(bytes, color_space))
+}
+
+/// [`decoded_size`] without its guard.
+fn header_size(bytes: &[u8], color_space: ColorSpace) -> Result<(u32, u32, u64), TextureError> {
     use image::{ColorType, ImageDecoder as _};
     let decode_error = |e: image::ImageError| TextureError::Decode(e.to_string());
     let decoder = ImageReader::new(Cursor::new(bytes))

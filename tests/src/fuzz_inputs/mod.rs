@@ -10,6 +10,7 @@
 //! A failing input prints as a Rust block ([`orient_barycentric_code`],
 //! [`inverse_bilinear_code`]) that a regression test can paste.
 
+pub mod decoder_panics;
 pub mod environment;
 pub mod gltf_loader;
 pub mod hull2d;
