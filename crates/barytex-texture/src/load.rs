@@ -140,9 +140,10 @@ pub const DECODER_PANIC: &str =
 /// Runs `f`, which calls third-party decoders, with a panic becoming
 /// [`TextureError::Decode`]`(`[`DECODER_PANIC`]`)`: files are untrusted input, and a decoder's
 /// bug must not take the caller down. zune-jpeg (the `image` crate's JPEG decoder, 0.5.15)
-/// panics in its AVX2 inverse DCT on some corrupt files (an `unwrap` of an out-of-range block
-/// slice; zune-image issue #361, open), which the fuzz target `png_jpeg_loader` found. The
-/// panic's message is not kept: it names decoder internals, not the file.
+/// panics on some corrupt files — in its AVX2 and scalar inverse DCTs (an `unwrap` of an
+/// out-of-range block slice) and its AVX2 upsampler; zune-image issue #361, open — which the
+/// fuzz target `png_jpeg_loader` found. The panic's message is not kept: it names decoder
+/// internals, not the file.
 fn guarded<T>(f: impl FnOnce() -> Result<T, TextureError>) -> Result<T, TextureError> {
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(f))
         .unwrap_or_else(|_| Err(TextureError::Decode(DECODER_PANIC.to_owned())))

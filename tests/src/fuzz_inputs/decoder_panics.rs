@@ -2,14 +2,15 @@
 //!
 //! libFuzzer's panic hook (libfuzzer-sys) aborts on every panic, before any `catch_unwind` can
 //! see it. The texture loader runs third-party decoders under a guard that turns their panics
-//! into [`TextureError::Decode`](barytex_texture::TextureError::Decode) (zune-jpeg's AVX2
-//! inverse DCT panics on some corrupt files: zune-image issue #361), so under the fuzzer such a
+//! into [`TextureError::Decode`](barytex_texture::TextureError::Decode) (zune-jpeg's inverse
+//! DCTs and upsampler panic on some corrupt files: zune-image issue #361), so under the fuzzer such a
 //! panic would be reported although the loader handles it. [`let_dependency_panics_unwind`]
 //! makes the targets that decode images let a panic raised inside a crates.io dependency unwind
 //! to that guard; a panic nothing catches still aborts at libFuzzer's top level (its own
 //! `catch_unwind` around each input), and a panic anywhere else aborts at once, as before.
 
 use std::sync::Once;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Whether a panic at `file` was raised inside a crates.io dependency (a path under Cargo's
 /// registry sources), not in this workspace or the standard library.
@@ -19,15 +20,22 @@ pub fn raised_in_dependency(file: &str) -> bool {
 }
 
 /// Installs, once, a panic hook in front of libFuzzer's: a panic raised inside a crates.io
-/// dependency is printed as a note and unwinds; every other one goes to the previous hook
-/// (libFuzzer's, which prints it and aborts). Call it first in a target that decodes images.
+/// dependency unwinds (the first one is printed as a note: a fuzzer that found such an input
+/// hits it thousands of times); every other one goes to the previous hook (libFuzzer's, which
+/// prints it and aborts). Call it first in a target that decodes images.
 pub fn let_dependency_panics_unwind() {
     static INSTALL: Once = Once::new();
+    static NOTED: AtomicBool = AtomicBool::new(false);
     INSTALL.call_once(|| {
         let previous = std::panic::take_hook();
         std::panic::set_hook(Box::new(move |info| match info.location() {
             Some(at) if raised_in_dependency(at.file()) => {
-                eprintln!("note: a dependency panicked at {at}; unwinding to the caller's guard");
+                if !NOTED.swap(true, Ordering::Relaxed) {
+                    eprintln!(
+                        "note: a dependency panicked at {at}; unwinding to the caller's guard \
+                         (further ones not shown)"
+                    );
+                }
             }
             _ => previous(info),
         }));
