@@ -133,7 +133,8 @@ pub fn load_from_memory(
     guarded(|| decode(bytes, color_space, limits))
 }
 
-/// The message of the [`TextureError::Decode`] a decoder's panic becomes (see [`guarded`]).
+/// The message of the [`TextureError::Decode`] that [`load_from_memory`] and [`decoded_size`]
+/// return when a third-party decoder panics on a file (caught: files are untrusted input).
 pub const DECODER_PANIC: &str =
     "the image decoder failed on this file (it panicked: a decoder bug, caught)";
 

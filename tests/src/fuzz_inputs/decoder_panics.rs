@@ -3,8 +3,8 @@
 //! libFuzzer's panic hook (libfuzzer-sys) aborts on every panic, before any `catch_unwind` can
 //! see it. The texture loader runs third-party decoders under a guard that turns their panics
 //! into [`TextureError::Decode`](barytex_texture::TextureError::Decode) (zune-jpeg's inverse
-//! DCTs and upsampler panic on some corrupt files: zune-image issue #361), so under the fuzzer such a
-//! panic would be reported although the loader handles it. [`let_dependency_panics_unwind`]
+//! DCTs and upsampler panic on some corrupt files: zune-image issue #361), so under the fuzzer
+//! such a panic would be reported although the loader handles it. [`let_dependency_panics_unwind`]
 //! makes the targets that decode images let a panic raised inside a crates.io dependency unwind
 //! to that guard; a panic nothing catches still aborts at libFuzzer's top level (its own
 //! `catch_unwind` around each input), and a panic anywhere else aborts at once, as before.
