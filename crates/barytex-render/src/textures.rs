@@ -40,9 +40,7 @@ impl PreparedTexture {
             Self::Rgba32f(s) => s.sample(uv, ddx, ddy),
         }
     }
-}
 
-impl PreparedTexture {
     /// [`sample`](Self::sample) through `mapped` with an 8-bit sRGB texture's lookup inlined
     /// into the caller (the base colour's format in nearly every file; the unlit fragment
     /// loop's one lookup); other formats through the call.
