@@ -50,8 +50,10 @@ impl InverseBilinear {
 }
 
 /// How far outside `[0, 1]` a parameter may be computed and still count as inside: 2⁻²⁷, above
-/// the error of a root from coefficients accurate to 2⁻³⁰ for a point exactly on the boundary,
-/// and below the half-ulp (2⁻²⁵) that rounding the f32 result near 1 moves it anyway.
+/// the error of a root from coefficients accurate to 2⁻³⁰ for a point on the boundary of a
+/// well-shaped quad, and below the half-ulp (2⁻²⁵) that rounding the f32 result near 1 moves it
+/// anyway. Next to a double root (a corner of a quad with a short edge) the error outgrows it:
+/// `inverse_bilinear_2d` decides exact edge points exactly instead.
 const INSIDE_SLACK: f64 = 1.0 / (1u64 << 27) as f64;
 
 /// Invert the bilinear map of the quad `[x, y, z, w]` (corner order as in
@@ -61,8 +63,9 @@ const INSIDE_SLACK: f64 = 1.0 / (1u64 << 27) as f64;
 /// inputs with an exact sign and 2⁻³⁰ relative accuracy (an exact expansion sum of f32 × f32
 /// products where plain f64 cancels), the rest in f64, where no f32 input or product overflows or
 /// underflows; so a quad of size 1e-30, at offset 1e7 or with corners of wildly different
-/// magnitudes behaves like a unit quad. A point exactly on the boundary is inside;
-/// inside results are clamped to `[0, 1]²`.
+/// magnitudes behaves like a unit quad. A point exactly on the boundary is inside (decided
+/// exactly, at any κ: where the roots miss the unit square, the point on an edge gets that edge's
+/// parameters); inside results are clamped to `[0, 1]²`.
 ///
 /// When `s₁(β) = s₂(β)` (an edge of the quad collapsed to a point) and `p` is that point, every
 /// `α` maps to it and `α = 0` is returned. At the point where all rulings of a self-intersecting
@@ -80,9 +83,11 @@ const INSIDE_SLACK: f64 = 1.0 / (1u64 << 27) as f64;
 /// result is bit-identical under power-of-two scaling), and is loose: measured at most 3.0e-8
 /// on 20 000 quads squeezed to κ = 7.5e7 at offsets up to 1e3, and the plain `3e-7` is asserted on
 /// the `convex_quad` sample (κ median 12.4, max 7.4e7). A point inside whose f32 rounding
-/// leaves the quad gets its nearest preimage outside (tests `inverse_bilinear_round_trip`,
-/// `inverse_bilinear_2d_within_its_condition_bound`, `inverse_bilinear_scale_invariant` and the
-/// hard-case table).
+/// leaves the quad gets its nearest preimage outside; a point exactly on an edge (corners
+/// included) is `Inside` at any κ, where the roots alone missed the unit square from κ ≈ 9e3 on
+/// (tests `inverse_bilinear_round_trip`, `inverse_bilinear_2d_within_its_condition_bound`,
+/// `inverse_bilinear_scale_invariant`, `exact_edge_points_next_to_a_double_root_are_inside` and
+/// the hard-case table).
 ///
 /// ```
 /// use barytex_interp::{inverse_bilinear_2d, InverseBilinear};
@@ -116,12 +121,54 @@ pub fn inverse_bilinear_2d(p: Vec2, quad: [Vec2; 4]) -> Result<InverseBilinear, 
         cross(p, x, p, y),
     ];
     let origin = x.as_dvec2();
-    solve(
+    match solve(
         p.as_dvec2() - origin,
         quad.map(|c| c.as_dvec2() - origin),
         coefficients,
         false,
-    )
+    ) {
+        // Next to a double root (a corner of a quad with a short edge, κ from about 9e3) the
+        // roots' error outgrows `INSIDE_SLACK`: the corner w of one such quad came back at
+        // α = −9.2e-9. A point exactly on one of the four edges (decided exactly) is inside, at
+        // that edge's nearest point.
+        Ok(InverseBilinear::Outside(nearest)) => Ok(exact_edge_point(p, quad)
+            .map_or(InverseBilinear::Outside(nearest), InverseBilinear::Inside)),
+        other => other,
+    }
+}
+
+/// The `(α, β)` of `p` on the quad's boundary when it lies exactly on one of the four straight
+/// edges (`α = 0`: x–w, `α = 1`: y–z, `β = 0`: x–y, `β = 1`: w–z), the parameter along the edge
+/// by projection in f64 (the differences of f32 values are exact there unless their magnitudes
+/// differ by more than 2²⁹).
+fn exact_edge_point(p: Vec2, [x, y, z, w]: [Vec2; 4]) -> Option<Vec2> {
+    let edges = [(x, w), (y, z), (x, y), (w, z)];
+    edges
+        .into_iter()
+        .enumerate()
+        .find_map(|(edge, (start, end))| {
+            let within = |a: f32, b: f32, v: f32| a.min(b) <= v && v <= a.max(b);
+            let on_edge = crate::determinant::orient2d_det(start, end, p) == 0.0
+                && within(start.x, end.x, p.x)
+                && within(start.y, end.y, p.y);
+            if !on_edge {
+                return None;
+            }
+            let d = end.as_dvec2() - start.as_dvec2();
+            let den = d.length_squared();
+            let t = if den == 0.0 {
+                0.0
+            } else {
+                ((p.as_dvec2() - start.as_dvec2()).dot(d) / den).clamp(0.0, 1.0)
+            };
+            Some(match edge {
+                0 => DVec2::new(0.0, t),
+                1 => DVec2::new(1.0, t),
+                2 => DVec2::new(t, 0.0),
+                _ => DVec2::new(t, 1.0),
+            })
+        })
+        .map(DVec2::as_vec2)
 }
 
 /// Invert the bilinear map of a quad in 3D, planar or not.

@@ -598,6 +598,40 @@ fn convex_quad_sample_condition() {
     assert!(kappas[0] >= 1.0);
 }
 
+/// A point exactly on an edge is inside, also where the roots are off by more than the solver's
+/// 2⁻²⁷ slack: next to a double root, at a corner of a quad with a short edge. The corner w of
+/// `[(2.3e-7, −6.5e-7), (2.343857, 0.44902104), (1.0764865, 2.0248013), (1.0761712, 2.0247755)]`
+/// (κ ≈ 9.1e3, the corner x near the origin so that the coefficients round) came back
+/// `Outside` at α = −9.2e-9; the midpoint of the 2-ulp edge w–z of a κ ≈ 2.2e7 quad at
+/// α = 0.5002, β = 1 + 7.5e-9. Found by a brute-force search over exact edge points.
+#[test]
+fn exact_edge_points_next_to_a_double_root_are_inside() {
+    let bits = |b: [u32; 2]| Vec2::from_array(b.map(f32::from_bits));
+    let quad = [
+        [880_192_450, 3_039_685_282],
+        [1_075_184_065, 1_055_254_038],
+        [1_065_994_831, 1_073_845_848],
+        [1_065_992_186, 1_073_845_740],
+    ]
+    .map(bits);
+    assert_eq!(
+        inverse_bilinear_2d(quad[3], quad).unwrap(),
+        InverseBilinear::Inside(Vec2::Y)
+    );
+    let quad = [
+        [3_200_739_966, 1_071_093_962],
+        [1_114_242_872, 1_057_199_641],
+        [1_105_605_703, 1_116_904_374],
+        [1_105_605_701, 1_116_904_374],
+    ]
+    .map(bits);
+    let p = bits([1_105_605_702, 1_116_904_374]);
+    assert_eq!(
+        inverse_bilinear_2d(p, quad).unwrap(),
+        InverseBilinear::Inside(Vec2::new(0.5, 1.0))
+    );
+}
+
 /// Regression (`inverse_bilinear_3d_planar`, seed `78e69217…`): the `convex_quad` sliver
 /// `[(-0.04119272, 5.284682), (-0.13864845, 4.48744), (-0.24657917, 3.594275),
 /// (-0.32171214, 2.8610191)]` (κ ≈ 500) rotated into 3D, and the f32 rounding of its point at
