@@ -135,6 +135,10 @@ pub fn load_from_memory(
 
 /// The message of the [`TextureError::Decode`] that [`load_from_memory`] and [`decoded_size`]
 /// return when a third-party decoder panics on a file (caught: files are untrusted input).
+///
+/// Catching needs unwinding: a program built with `panic = "abort"` still aborts on such a
+/// file. The panic hook runs before the catch, so by default the decoder's panic message and
+/// location are printed to standard error, though the call returns this error.
 pub const DECODER_PANIC: &str =
     "the image decoder failed on this file (it panicked: a decoder bug, caught)";
 
