@@ -138,12 +138,11 @@ pub fn inverse_bilinear_2d(p: Vec2, quad: [Vec2; 4]) -> Result<InverseBilinear, 
 }
 
 /// The `(α, β)` of `p` on the quad's boundary when it lies exactly on one of the four straight
-/// edges (`α = 0`: x–w, `α = 1`: y–z, `β = 0`: x–y, `β = 1`: w–z), the parameter along the edge
+/// edges ([`edges`]), the parameter along the edge
 /// by projection in f64 (the differences of f32 values are exact there unless their magnitudes
 /// differ by more than 2²⁹).
-fn exact_edge_point(p: Vec2, [x, y, z, w]: [Vec2; 4]) -> Option<Vec2> {
-    let edges = [(x, w), (y, z), (x, y), (w, z)];
-    edges
+fn exact_edge_point(p: Vec2, quad: [Vec2; 4]) -> Option<Vec2> {
+    edges(quad)
         .into_iter()
         .enumerate()
         .find_map(|(edge, (start, end))| {
@@ -161,14 +160,26 @@ fn exact_edge_point(p: Vec2, [x, y, z, w]: [Vec2; 4]) -> Option<Vec2> {
             } else {
                 ((p.as_dvec2() - start.as_dvec2()).dot(d) / den).clamp(0.0, 1.0)
             };
-            Some(match edge {
-                0 => DVec2::new(0.0, t),
-                1 => DVec2::new(1.0, t),
-                2 => DVec2::new(t, 0.0),
-                _ => DVec2::new(t, 1.0),
-            })
+            Some(edge_parameters(edge, t))
         })
         .map(DVec2::as_vec2)
+}
+
+/// The quad's four straight edges as `(start, end)`, numbered as [`edge_parameters`] reads
+/// them: `α = 0` (x–w), `α = 1` (y–z), `β = 0` (x–y), `β = 1` (w–z).
+fn edges<T: Copy>([x, y, z, w]: [T; 4]) -> [(T, T); 4] {
+    [(x, w), (y, z), (x, y), (w, z)]
+}
+
+/// The `(α, β)` of the point a fraction `t` from the start to the end of edge `edge` of
+/// [`edges`].
+fn edge_parameters(edge: usize, t: f64) -> DVec2 {
+    match edge {
+        0 => DVec2::new(0.0, t),
+        1 => DVec2::new(1.0, t),
+        2 => DVec2::new(t, 0.0),
+        _ => DVec2::new(t, 1.0),
+    }
 }
 
 /// Invert the bilinear map of a quad in 3D, planar or not.
@@ -256,12 +267,10 @@ const SUBNORMAL_HALF_ULP: f64 = f32::from_bits(1) as f64;
 const EVALUATION: f64 = 1.0 / (1u64 << 48) as f64;
 
 /// The `(α, β)` of the point on the quad's boundary nearest to `p`, if it is within `tolerance`.
-/// The edges of a bilinear surface are the straight segments `α = 0` (x–w), `α = 1` (y–z),
-/// `β = 0` (x–y) and `β = 1` (w–z).
-fn nearest_edge_point(p: DVec3, [x, y, z, w]: [DVec3; 4], tolerance: f64) -> Option<Vec2> {
-    let edges = [(x, w), (y, z), (x, y), (w, z)];
+/// The edges of a bilinear surface are straight segments ([`edges`]).
+fn nearest_edge_point(p: DVec3, quad: [DVec3; 4], tolerance: f64) -> Option<Vec2> {
     let mut best: Option<(f64, DVec2)> = None;
-    for (edge, (start, end)) in edges.into_iter().enumerate() {
+    for (edge, (start, end)) in edges(quad).into_iter().enumerate() {
         let d = end - start;
         let den = d.length_squared();
         let t = if den == 0.0 {
@@ -271,13 +280,7 @@ fn nearest_edge_point(p: DVec3, [x, y, z, w]: [DVec3; 4], tolerance: f64) -> Opt
         };
         let distance = (start + d * t - p).length();
         if distance <= tolerance && best.is_none_or(|(b, _)| distance < b) {
-            let ab = match edge {
-                0 => DVec2::new(0.0, t),
-                1 => DVec2::new(1.0, t),
-                2 => DVec2::new(t, 0.0),
-                _ => DVec2::new(t, 1.0),
-            };
-            best = Some((distance, ab));
+            best = Some((distance, edge_parameters(edge, t)));
         }
     }
     best.map(|(_, ab)| ab.as_vec2())
