@@ -1,33 +1,48 @@
 //! Primitive assembly: index triples to screen-space pieces — clipping, facing and culling,
 //! the viewport transform and fixed-point setup. Every triangle that is not drawn is counted.
 
-use glam::{Vec2, Vec3, Vec4};
+use glam::{DVec2, Vec2, Vec3, Vec4};
 
 use crate::clip::{ClipVertex, MAX_CLIPPED, clip, inside};
 use crate::draw::DrawStats;
 use crate::edge::EdgeSetup;
 use crate::shader::PieceContext;
-use crate::state::{CullMode, FrontFace, PipelineState, Viewport};
+use crate::state::{CullMode, FrontFace, Interpolation, PipelineState, Viewport};
 
 /// One screen-space piece of an input triangle (a clipped triangle is a fan of pieces).
-pub(crate) struct Piece<V> {
+///
+/// The input triangle's varyings are not copied into the piece: it names the vertex stage's
+/// outputs by index, and [`context`](Self::context) gathers them where a tile draws the piece.
+/// Three copied varyings were half of a piece's bytes, and the pieces of a draw are memory it
+/// touches for the first time (a page fault every 4 KiB: on Suzanne at 1024², 3 936 triangles,
+/// assembly's faults took about as long as its arithmetic).
+pub(crate) struct Piece {
     pub(crate) edge: EdgeSetup,
     /// Depth at the piece's vertices.
     pub(crate) depth: [f64; 3],
     pub(crate) front: bool,
-    pub(crate) context: PieceContext<V>,
+    /// The input triangle's vertices: indices into the vertex stage's outputs, in range (checked
+    /// by [`assemble`]).
+    vertices: [u32; 3],
+    /// Screen gradients of the piece's barycentrics.
+    grads: [DVec2; 3],
+    /// 1/w at the piece's vertices.
+    inv_w: [f64; 3],
+    /// The piece's vertices as barycentrics of the input triangle (`None`: the identity).
+    bary: Option<[Vec3; 3]>,
+    interpolation: Interpolation,
 }
 
-impl<V> Piece<V> {
+impl Piece {
     /// The piece of the screen triangle `s` (each vertex's position, depth and `1/w`, from
-    /// [`to_screen`]) with its setup `edge`; `bary` is its vertices' weights over the input
-    /// triangle's, `None` for the input triangle itself.
+    /// [`to_screen`]) with its setup `edge`, of the input triangle `vertices`; `bary` is its
+    /// vertices' weights over the input triangle's, `None` for the input triangle itself.
     #[inline(always)]
     fn new(
         edge: EdgeSetup,
         s: [(Vec2, f64, f64); 3],
         front: bool,
-        varyings: [V; 3],
+        vertices: [u32; 3],
         bary: Option<[Vec3; 3]>,
         state: &PipelineState,
     ) -> Self {
@@ -36,13 +51,24 @@ impl<V> Piece<V> {
             edge,
             depth: [s[0].1, s[1].1, s[2].1],
             front,
-            context: PieceContext {
-                varyings,
-                grads: [g0, g1, g2],
-                inv_w: [s[0].2, s[1].2, s[2].2],
-                bary,
-                interpolation: state.interpolation,
-            },
+            vertices,
+            grads: [g0, g1, g2],
+            inv_w: [s[0].2, s[1].2, s[2].2],
+            bary,
+            interpolation: state.interpolation,
+        }
+    }
+
+    /// What the fragments of the piece need from it, with its input triangle's varyings from
+    /// `shaded`, the vertex stage's outputs the piece was assembled from.
+    #[inline(always)]
+    pub(crate) fn context<V: Copy>(&self, shaded: &[(Vec4, V)]) -> PieceContext<V> {
+        PieceContext {
+            varyings: self.vertices.map(|i| shaded[i as usize].1),
+            grads: self.grads,
+            inv_w: self.inv_w,
+            bary: self.bary,
+            interpolation: self.interpolation,
         }
     }
 
@@ -65,7 +91,7 @@ pub(crate) fn assemble<V: Copy>(
     state: &PipelineState,
     viewport: Viewport,
     stats: &mut DrawStats,
-) -> Vec<Piece<V>> {
+) -> Vec<Piece> {
     let mut pieces = Vec::with_capacity(indices.len() / 3);
     for tri in indices.chunks_exact(3) {
         stats.triangles_in += 1;
@@ -75,14 +101,14 @@ pub(crate) fn assemble<V: Copy>(
             continue;
         };
         let positions = [v0.0, v1.0, v2.0];
-        let varyings = [v0.1, v1.1, v2.1];
+        let vertices = [tri[0], tri[1], tri[2]];
         if positions.iter().any(|p| !p.is_finite()) {
             stats.dropped_non_finite += 1;
             continue;
         }
         // Most triangles need no clipping: their own path, without the clipper's buffers.
         if inside(&positions) {
-            whole_triangle(&positions, varyings, state, viewport, stats, &mut pieces);
+            whole_triangle(&positions, vertices, state, viewport, stats, &mut pieces);
             continue;
         }
         stats.clipped += 1;
@@ -124,7 +150,7 @@ pub(crate) fn assemble<V: Copy>(
             drawn = true;
             let bary = [polygon[0].bary, polygon[k].bary, polygon[k + 1].bary];
             let bary = (bary != [Vec3::X, Vec3::Y, Vec3::Z]).then_some(bary);
-            pieces.push(Piece::new(edge, s, front, varyings, bary, state));
+            pieces.push(Piece::new(edge, s, front, vertices, bary, state));
         }
         if !drawn {
             stats.degenerate += 1;
@@ -152,13 +178,13 @@ fn to_screen(viewport: Viewport, w: f32, n: Vec3) -> (Vec2, f64, f64) {
 /// buffers, its barycentric frame (the identity) or the fan loop: most triangles take this
 /// path, and copying them through the clipper's arrays was a good part of assembly.
 #[inline(always)]
-fn whole_triangle<V: Copy>(
+fn whole_triangle(
     positions: &[Vec4; 3],
-    varyings: [V; 3],
+    vertices: [u32; 3],
     state: &PipelineState,
     viewport: Viewport,
     stats: &mut DrawStats,
-    pieces: &mut Vec<Piece<V>>,
+    pieces: &mut Vec<Piece>,
 ) {
     // `xyz / w` lane by lane: each lane's division is the IEEE one of the scalar path.
     let ndc = positions.map(|p| (p / Vec4::splat(p.w)).truncate());
@@ -181,7 +207,7 @@ fn whole_triangle<V: Copy>(
         stats.degenerate += 1;
         return;
     };
-    pieces.push(Piece::new(edge, s, front, varyings, None, state));
+    pieces.push(Piece::new(edge, s, front, vertices, None, state));
 }
 
 /// Whether a polygon whose NDC area (y up, summed in polygon order) is `area` faces the front,

@@ -75,13 +75,13 @@ fn assemble_parallel<V: Copy + Send + Sync>(
     state: &PipelineState,
     viewport: Viewport,
     stats: &mut DrawStats,
-) -> Vec<Piece<V>> {
+) -> Vec<Piece> {
     // One thread: no chunks to concatenate (that copy was 2 % of a 10k-triangle raster-only
     // draw); the pieces are the same either way.
     if indices.len() <= 3 * ASSEMBLY_CHUNK || rayon::current_num_threads() == 1 {
         return assemble(shaded, indices, state, viewport, stats);
     }
-    let chunks: Vec<(Vec<Piece<V>>, DrawStats)> = indices
+    let chunks: Vec<(Vec<Piece>, DrawStats)> = indices
         .par_chunks(3 * ASSEMBLY_CHUNK)
         .map(|chunk| {
             let mut chunk_stats = DrawStats::default();
@@ -292,7 +292,7 @@ fn draw_batched<S: Shader, C: ColorFormat>(
     while next < pieces.len() {
         next = bins.fill(&pieces, next, max_entries);
         debug_assert!(bins.entries <= max_entries.max(bins.pieces.len()));
-        stats += &draw_bins(target, clear, shader, state, &pieces, &bins);
+        stats += &draw_bins(target, clear, shader, state, (&shaded, &pieces), &bins);
         // Later batches draw over the first one's clear.
         clear = None;
         bins.empty();
@@ -334,7 +334,7 @@ impl Bins {
     /// Bins `pieces[first..]` in order until the next piece would take the entries past
     /// `max_entries` (the first always goes in: one piece's entries are at most the tile count);
     /// returns the index of the first piece not binned.
-    fn fill<V>(&mut self, pieces: &[Piece<V>], first: usize, max_entries: usize) -> usize {
+    fn fill(&mut self, pieces: &[Piece], first: usize, max_entries: usize) -> usize {
         let tile = i64::from(TILE);
         let rect = self.rect;
         for (id, piece) in pieces.iter().enumerate().skip(first) {
@@ -380,7 +380,7 @@ fn draw_bins<S: Shader, C: ColorFormat>(
     clear: Option<C::Sample>,
     shader: &S,
     state: &PipelineState,
-    pieces: &[Piece<S::Varying>],
+    (shaded, pieces): (&[(Vec4, S::Varying)], &[Piece]),
     bins: &Bins,
 ) -> DrawStats {
     let mut stats = DrawStats::default();
@@ -438,6 +438,7 @@ fn draw_bins<S: Shader, C: ColorFormat>(
             }
             shade_piece(
                 &pieces[id as usize],
+                shaded,
                 shader,
                 state,
                 &mut tile_target,

@@ -110,22 +110,25 @@ struct SpanCache {
 
 /// Rasterizes and shades one piece into the tile.
 pub(crate) fn shade_piece<S: Shader, C: ColorFormat>(
-    piece: &Piece<S::Varying>,
+    piece: &Piece,
+    shaded: &[(Vec4, S::Varying)],
     shader: &S,
     state: &PipelineState,
     tile: &mut TileTarget<'_, C>,
     stats: &mut DrawStats,
 ) {
+    let context = &piece.context(shaded);
     if tile.samples == 1 {
-        shade_single(piece, shader, state, tile, stats);
+        shade_single(piece, context, shader, state, tile, stats);
     } else {
-        shade_multi(piece, shader, state, tile, stats);
+        shade_multi(piece, context, shader, state, tile, stats);
     }
 }
 
 /// One sample per pixel, at its centre.
 fn shade_single<S: Shader, C: ColorFormat>(
-    piece: &Piece<S::Varying>,
+    piece: &Piece,
+    context: &PieceContext<S::Varying>,
     shader: &S,
     state: &PipelineState,
     tile: &mut TileTarget<'_, C>,
@@ -134,6 +137,7 @@ fn shade_single<S: Shader, C: ColorFormat>(
     if let Interpolation::AffineSpans { span } = state.interpolation {
         shade_spans(
             piece,
+            context,
             shader,
             state,
             tile,
@@ -154,23 +158,29 @@ fn shade_single<S: Shader, C: ColorFormat>(
     ) {
         (Some(DepthCompare::Less), Blend::Replace, true) => {
             let (test, store) = (|z, s| z < s, |z, _| z);
-            shade_centres::<S, C, false, false>(piece, shader, tile, stats, test, store);
+            shade_centres::<S, C, false, false>(piece, context, shader, tile, stats, test, store);
         }
         (Some(DepthCompare::LessEqual), Blend::Replace, true) => {
             let (test, store) = (|z, s| z <= s, |z, _| z);
-            shade_centres::<S, C, false, false>(piece, shader, tile, stats, test, store);
+            shade_centres::<S, C, false, false>(piece, context, shader, tile, stats, test, store);
         }
         (Some(DepthCompare::Less), Blend::Over, _) => {
             let test = |z, s| z < s;
-            shade_centres::<S, C, true, true>(piece, shader, tile, stats, test, keep_depth);
+            shade_centres::<S, C, true, true>(
+                piece, context, shader, tile, stats, test, keep_depth,
+            );
         }
         (op, Blend::Replace, _) => {
             let test = |z, s| op.is_none_or(|op: DepthCompare| op.passes(z, s));
-            shade_centres::<S, C, false, true>(piece, shader, tile, stats, test, keep_depth);
+            shade_centres::<S, C, false, true>(
+                piece, context, shader, tile, stats, test, keep_depth,
+            );
         }
         (op, Blend::Over, _) => {
             let test = |z, s| op.is_none_or(|op: DepthCompare| op.passes(z, s));
-            shade_centres::<S, C, true, true>(piece, shader, tile, stats, test, keep_depth);
+            shade_centres::<S, C, true, true>(
+                piece, context, shader, tile, stats, test, keep_depth,
+            );
         }
     }
 }
@@ -181,14 +191,14 @@ fn shade_single<S: Shader, C: ColorFormat>(
 /// the results are those of [`blend`] and [`DepthCompare::passes`] pixel by pixel.
 #[inline]
 fn shade_centres<S: Shader, C: ColorFormat, const OVER: bool, const MASKED: bool>(
-    piece: &Piece<S::Varying>,
+    piece: &Piece,
+    context: &PieceContext<S::Varying>,
     shader: &S,
     tile: &mut TileTarget<'_, C>,
     stats: &mut DrawStats,
     passes: impl Fn(f32, f32) -> bool,
     store: impl Fn(f32, f32) -> f32,
 ) {
-    let context = &piece.context;
     let depths = piece.depth;
     let inv_area = piece.edge.inv_area();
     let (ox, oy) = tile.origin;
@@ -315,14 +325,14 @@ fn shade_pixel<S: Shader, C: ColorFormat, const OVER: bool>(
 
 /// One sample per pixel with affine spans ([`Interpolation::AffineSpans`]).
 fn shade_spans<S: Shader, C: ColorFormat>(
-    piece: &Piece<S::Varying>,
+    piece: &Piece,
+    context: &PieceContext<S::Varying>,
     shader: &S,
     state: &PipelineState,
     tile: &mut TileTarget<'_, C>,
     stats: &mut DrawStats,
     span: i64,
 ) {
-    let context = &piece.context;
     let mut cache = SpanCache {
         row: i64::MIN,
         start: 0,
@@ -416,7 +426,8 @@ fn span_weights<V: Copy>(
 /// Several samples per pixel: coverage and depth per sample; shading per pixel (MSAA) or per
 /// sample.
 fn shade_multi<S: Shader, C: ColorFormat>(
-    piece: &Piece<S::Varying>,
+    piece: &Piece,
+    context: &PieceContext<S::Varying>,
     shader: &S,
     state: &PipelineState,
     tile: &mut TileTarget<'_, C>,
@@ -424,7 +435,6 @@ fn shade_multi<S: Shader, C: ColorFormat>(
 ) {
     const ONE: i64 = 1 << crate::edge::SUBPIXEL_BITS;
     let edge = &piece.edge;
-    let context = &piece.context;
     let samples = tile.samples;
     let pattern = tile.pattern;
     // Edge offsets of each sample from the pixel corner, when every pixel shares them.
