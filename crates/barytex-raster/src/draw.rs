@@ -7,8 +7,8 @@ use glam::Vec4;
 use rayon::prelude::*;
 
 use crate::Shader;
-use crate::assemble::{Piece, assemble};
 use crate::format::ColorFormat;
+use crate::pieces::{Pieces, assemble_parallel};
 use crate::state::{PipelineState, Viewport};
 use crate::target::{Framebuffer, TILE};
 use crate::tile::{TileTarget, shade_piece};
@@ -61,40 +61,6 @@ impl core::ops::AddAssign<&DrawStats> for DrawStats {
         self.fragments_discarded += other.fragments_discarded;
         self.fragments_depth_failed += other.fragments_depth_failed;
     }
-}
-
-/// Triangles per parallel job of primitive assembly: enough that a job outweighs its
-/// scheduling, few enough that two threads share a mesh of a few thousand triangles.
-const ASSEMBLY_CHUNK: usize = 512;
-
-/// [`assemble`] over chunks of triangles in parallel, the pieces concatenated in submission
-/// order (so the result, and everything drawn from it, does not depend on the thread count).
-fn assemble_parallel<V: Copy + Send + Sync>(
-    shaded: &[(Vec4, V)],
-    indices: &[u32],
-    state: &PipelineState,
-    viewport: Viewport,
-    stats: &mut DrawStats,
-) -> Vec<Piece> {
-    // One thread: no chunks to concatenate (that copy was 2 % of a 10k-triangle raster-only
-    // draw); the pieces are the same either way.
-    if indices.len() <= 3 * ASSEMBLY_CHUNK || rayon::current_num_threads() == 1 {
-        return assemble(shaded, indices, state, viewport, stats);
-    }
-    let chunks: Vec<(Vec<Piece>, DrawStats)> = indices
-        .par_chunks(3 * ASSEMBLY_CHUNK)
-        .map(|chunk| {
-            let mut chunk_stats = DrawStats::default();
-            let pieces = assemble(shaded, chunk, state, viewport, &mut chunk_stats);
-            (pieces, chunk_stats)
-        })
-        .collect();
-    let mut pieces = Vec::with_capacity(chunks.iter().map(|(p, _)| p.len()).sum());
-    for (chunk, chunk_stats) in chunks {
-        pieces.extend(chunk);
-        *stats += &chunk_stats;
-    }
-    pieces
 }
 
 /// The rectangle `[x0, y0, x1, y1)` that a draw may write: target ∩ viewport ∩ scissor.
@@ -280,7 +246,7 @@ fn draw_batched<S: Shader, C: ColorFormat>(
         .unwrap_or_else(|| Viewport::full(target.width(), target.height()));
     let pieces = assemble_parallel(&shaded, indices, state, viewport, &mut stats);
     let rect = writable_rect(target, state, viewport);
-    if rect[0] >= rect[2] || rect[1] >= rect[3] || pieces.is_empty() {
+    if rect[0] >= rect[2] || rect[1] >= rect[3] || pieces.len() == 0 {
         if let Some(color) = clear {
             target.clear(color);
         }
@@ -331,13 +297,13 @@ impl Bins {
         }
     }
 
-    /// Bins `pieces[first..]` in order until the next piece would take the entries past
-    /// `max_entries` (the first always goes in: one piece's entries are at most the tile count);
-    /// returns the index of the first piece not binned.
-    fn fill(&mut self, pieces: &[Piece], first: usize, max_entries: usize) -> usize {
+    /// Bins the pieces from position `first` (in submission order) on, in order, until the next
+    /// piece would take the entries past `max_entries` (the first always goes in: one piece's
+    /// entries are at most the tile count); returns the position of the first piece not binned.
+    fn fill(&mut self, pieces: &Pieces, first: usize, max_entries: usize) -> usize {
         let tile = i64::from(TILE);
         let rect = self.rect;
-        for (id, piece) in pieces.iter().enumerate().skip(first) {
+        for (ordinal, (id, piece)) in pieces.iter().enumerate().skip(first) {
             let b = piece.edge.bbox;
             let (x0, y0) = (b[0].max(rect[0]), b[1].max(rect[1]));
             let (x1, y1) = (b[2].min(rect[2]), b[3].min(rect[3]));
@@ -349,13 +315,13 @@ impl Bins {
             let (tx0, ty0, tx1, ty1) = (tile_of(x0), tile_of(y0), tile_of(x1 - 1), tile_of(y1 - 1));
             let entries = ((tx1 - tx0 + 1) * (ty1 - ty0 + 1)) as usize;
             if self.entries > 0 && self.entries + entries > max_entries {
-                return id;
+                return ordinal;
             }
             self.entries += entries;
             for ty in ty0..=ty1 {
                 for tx in tx0..=tx1 {
                     let index = (ty * self.tiles_x + tx) as usize;
-                    self.pieces[index].push(id as u32);
+                    self.pieces[index].push(id);
                     let e = &mut self.extents[index];
                     *e = [e[0].min(x0), e[1].min(y0), e[2].max(x1), e[3].max(y1)];
                 }
@@ -380,7 +346,7 @@ fn draw_bins<S: Shader, C: ColorFormat>(
     clear: Option<C::Sample>,
     shader: &S,
     state: &PipelineState,
-    (shaded, pieces): (&[(Vec4, S::Varying)], &[Piece]),
+    (shaded, pieces): (&[(Vec4, S::Varying)], &Pieces),
     bins: &Bins,
 ) -> DrawStats {
     let mut stats = DrawStats::default();
@@ -434,10 +400,10 @@ fn draw_bins<S: Shader, C: ColorFormat>(
         }
         for (k, &id) in bin.iter().enumerate() {
             if let Some(&ahead) = bin.get(k + PREFETCH_AHEAD) {
-                pieces[ahead as usize].prefetch();
+                pieces.get(ahead).prefetch();
             }
             shade_piece(
-                &pieces[id as usize],
+                pieces.get(id),
                 shaded,
                 shader,
                 state,

@@ -45,6 +45,7 @@ mod draw;
 mod edge;
 mod error;
 mod format;
+mod pieces;
 mod primitives;
 mod run_bound;
 mod run_depth;
