@@ -50,6 +50,7 @@ mod raster_only;
 mod stats;
 mod surface;
 mod textures;
+mod unlit_shader;
 mod view_draw;
 
 use std::fmt;

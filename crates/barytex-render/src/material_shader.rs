@@ -85,7 +85,7 @@ pub(crate) struct MaterialShader<'a> {
 /// The output alpha under glTF's alpha mode (§3.9.4 "Alpha Coverage") for a base colour of
 /// alpha `alpha`: 1 when opaque or kept by the mask, the alpha when blended; `None` when the
 /// mask discards the fragment.
-fn coverage_alpha(mode: AlphaMode, alpha: f32) -> Option<f32> {
+pub(crate) fn coverage_alpha(mode: AlphaMode, alpha: f32) -> Option<f32> {
     match mode {
         AlphaMode::Opaque => Some(1.0),
         // Discarded below the cutoff only: a NaN alpha is kept (not `alpha >= cutoff`).
@@ -142,6 +142,13 @@ impl MaterialShader<'_> {
             .with_if(Reads::TANGENT, normal_mapped)
     }
 
+    /// Whether [`UnlitShader`](crate::unlit_shader::UnlitShader) draws what this shader
+    /// would: an unlit material without fog, with only the parts it reads interpolated (tests
+    /// interpolate everything to compare the two paths).
+    pub(crate) fn takes_unlit_path(&self) -> bool {
+        !self.material.lit && self.fog.is_none() && !self.interpolate_all
+    }
+
     fn light_terms(&self, n: Vec3, view: Vec3, position: Vec3, shininess: f32) -> (Vec3, Vec3) {
         light_terms(self.lights, n, view, position, shininess)
     }
@@ -167,51 +174,12 @@ impl MaterialShader<'_> {
             .with_tex_coords([set(s.uv0, ddx.uv0, ddy.uv0), set(s.uv1, ddx.uv1, ddy.uv1)])
     }
 
-    /// [`fragment`](Shader::fragment) for glTF's unlit model without fog: base colour factor ×
-    /// texture × vertex colour, and the alpha mode. The same values as the general path, which
-    /// builds the whole surface point and both sets' derivatives; this reads only the base
-    /// texture's set and its derivatives (the unlit frame's fragment loop, issue 19).
-    #[inline(always)]
-    fn unlit(&self, f: &Fragment<'_, Surface>) -> Option<Vec4> {
-        let m = &self.material;
-        let s = &f.varying;
-        let mut base = m.base_color * s.color;
-        if let Some(slot) = m.base_texture
-            && let Some(texture) = self.textures.get(slot.texture)
-        {
-            // Sets other than 0 and 1 do not exist: the general path's mapping gives `None`.
-            // A closure per set rather than a function pointer: inlined, not three indirect
-            // calls a fragment.
-            let sample = match slot.mapping.set {
-                0 => Some(uv_sample(f, |v| v.uv0)),
-                1 => Some(uv_sample(f, |v| v.uv1)),
-                _ => None,
-            };
-            if let Some(mapped) = sample.and_then(|s| slot.mapping.transform_sample(&s)) {
-                base *= texture.sample_base(&mapped);
-            }
-        }
-        let alpha = coverage_alpha(m.alpha_mode, base.w)?;
-        Some(base.truncate().extend(alpha))
-    }
-
     /// The slot's texture through its uv mapping (the vertex set and `KHR_texture_transform`);
     /// `None` when the material has no such texture or the mapping is undefined at the pixel.
     fn sample(&self, slot: Option<Slot>, point: &SurfacePoint) -> Option<Vec4> {
         let slot = slot?;
         let texture = self.textures.get(slot.texture)?;
         Some(texture.sample_uv(&slot.mapping.map(point)?))
-    }
-}
-
-/// One uv set of a fragment's surface, `set(surface)`, with its screen derivatives.
-#[inline(always)]
-fn uv_sample(f: &Fragment<'_, Surface>, set: impl Fn(&Surface) -> Vec2) -> UvSample {
-    let (duvdx, duvdy) = f.derivatives_of(&set);
-    UvSample {
-        uv: set(&f.varying),
-        duvdx,
-        duvdy,
     }
 }
 
@@ -272,15 +240,13 @@ impl Shader for MaterialShader<'_> {
         (self.view_projection * position.extend(1.0), surface)
     }
 
-    /// The unlit short path inline (small: the rasterizer's pixel loop can inline it), the
-    /// general one through a call.
+    /// Every material through one call (the unlit short path is [`UnlitShader`]'s, a shader
+    /// of its own: the pixel loop inlines that one).
+    ///
+    /// [`UnlitShader`]: crate::unlit_shader::UnlitShader
     #[inline(always)]
     fn fragment(&self, f: &Fragment<'_, Surface>) -> Option<Vec4> {
-        if !self.material.lit && self.fog.is_none() && !self.interpolate_all {
-            self.unlit(f)
-        } else {
-            self.general(f)
-        }
+        self.general(f)
     }
 }
 

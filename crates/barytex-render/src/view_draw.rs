@@ -5,7 +5,7 @@
 
 use barytex_raster::{
     Blend, CullMode, DepthCompare, DrawStats, Framebuffer, FrontFace, PipelineState, RasterError,
-    TargetLimits, Viewport, draw, draw_lines, draw_points, mask_samples,
+    Shader, TargetLimits, Viewport, draw, draw_lines, draw_points, mask_samples,
 };
 use glam::{Vec2, Vec3};
 
@@ -14,6 +14,7 @@ use crate::material_shader::{Frequency, MaterialShader};
 use crate::portals::{PortalSurface, View};
 use crate::prepare::{ItemKind, Prepared};
 use crate::raster_only::RasterOnly;
+use crate::unlit_shader::UnlitShader;
 
 /// The most views drawn through portals in one pass over the scene; beyond it a portal shows
 /// the background, as at the depth limit (each portal a view sees can open another view, so
@@ -38,6 +39,28 @@ impl PortalViews {
     /// Starts counting a new pass against the per-pass budget.
     pub(crate) fn new_pass(&mut self) {
         self.in_pass = 0;
+    }
+}
+
+/// Draws one item's primitives of `kind` with `shader`, or with a constant fragment stage when
+/// `raster_only`.
+fn draw_item<S: Shader<Vertex = u32>>(
+    fb: &mut Framebuffer,
+    shader: &S,
+    state: &PipelineState,
+    kind: ItemKind,
+    raster_only: bool,
+    vertices: &[u32],
+    indices: &[u32],
+) -> DrawStats {
+    let (v, raster) = (vertices, &RasterOnly(shader));
+    match (kind, raster_only) {
+        (ItemKind::Triangles, true) => draw(fb, raster, state, v, indices),
+        (ItemKind::Triangles, false) => draw(fb, shader, state, v, indices),
+        (ItemKind::Points, true) => draw_points(fb, raster, state, v, indices),
+        (ItemKind::Points, false) => draw_points(fb, shader, state, v, indices),
+        (ItemKind::Lines(t), true) => draw_lines(fb, raster, state, v, indices, t),
+        (ItemKind::Lines(t), false) => draw_lines(fb, shader, state, v, indices, t),
     }
 }
 
@@ -122,19 +145,11 @@ impl SceneDraw<'_> {
                     ..self.state(view, shift, item.flips_winding)
                 };
                 let v = &item.vertices;
-                let s = match (item.kind, raster_only) {
-                    (ItemKind::Triangles, true) => {
-                        draw(fb, &RasterOnly(&shader), &state, v, indices)
+                let s = match UnlitShader::of(&shader) {
+                    Some(unlit) => {
+                        draw_item(fb, &unlit, &state, item.kind, raster_only, v, indices)
                     }
-                    (ItemKind::Triangles, false) => draw(fb, &shader, &state, v, indices),
-                    (ItemKind::Points, true) => {
-                        draw_points(fb, &RasterOnly(&shader), &state, v, indices)
-                    }
-                    (ItemKind::Points, false) => draw_points(fb, &shader, &state, v, indices),
-                    (ItemKind::Lines(t), true) => {
-                        draw_lines(fb, &RasterOnly(&shader), &state, v, indices, t)
-                    }
-                    (ItemKind::Lines(t), false) => draw_lines(fb, &shader, &state, v, indices, t),
+                    None => draw_item(fb, &shader, &state, item.kind, raster_only, v, indices),
                 };
                 stats += &s;
             }

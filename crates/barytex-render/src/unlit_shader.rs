@@ -1,0 +1,213 @@
+//! glTF's unlit model (`KHR_materials_unlit`: base colour factor × base colour texture × vertex
+//! colour, and the alpha mode) without fog, drawn with a varying of its own: the base texture's
+//! texture coordinates and the vertex colour, 24 bytes a vertex instead of a [`Surface`]'s 112.
+//!
+//! [`MaterialShader`] draws every material with one varying type, [`Surface`], that carries
+//! every part a material may read (position, normal, both uv sets, colour, vertex light,
+//! tangent) and interpolates only those it does. For an unlit material that is two or six
+//! floats of 24, but the vertex stage still writes the whole surface of every vertex and each
+//! fragment still tests which parts to interpolate. Here the vertex stage's outputs (memory a
+//! draw touches for the first time: a page fault every 4 KiB) are a quarter of the size, and
+//! a fragment interpolates its two parts without a test. The values are the same operations on
+//! the same inputs as [`MaterialShader`]'s general path, so the image is identical (tested by
+//! the renders that interpolate every part through the general path).
+//!
+//! [`Surface`]: crate::surface::Surface
+
+use barytex_gltf::material::AlphaMode;
+use barytex_interp::Interpolate;
+use barytex_raster::{Fragment, Shader};
+use barytex_uv::UvSample;
+use barytex_uv::mappings::TexCoordMapping;
+use glam::{Mat4, Vec2, Vec3, Vec4};
+
+use crate::material_shader::{MaterialShader, WorldPrimitive, coverage_alpha};
+use crate::textures::PreparedTexture;
+
+/// What an unlit fragment reads: the base texture's coordinate set and, when the primitive has
+/// vertex colours, the colour.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct UnlitVarying {
+    /// `TEXCOORD_n` of the base colour texture's set (zero without a base texture).
+    uv: Vec2,
+    /// `COLOR_0`, as an array: a `Vec4` would align the varying to 16 bytes (32 in all).
+    color: [f32; 4],
+    /// Whether `color` is interpolated: without vertex colours it stays white, exactly (the
+    /// weights of three white vertices need not sum to exactly 1 in `f32`).
+    colored: bool,
+}
+
+impl Interpolate for UnlitVarying {
+    #[inline]
+    fn scale(self, w: f32) -> Self {
+        Self {
+            uv: self.uv.scale(w),
+            color: self.colour_or_white(|c| c.scale(w)),
+            colored: self.colored,
+        }
+    }
+
+    #[inline]
+    fn add(self, o: Self) -> Self {
+        Self {
+            uv: self.uv.add(o.uv),
+            color: self.colour_or_white(|c| c.add(Vec4::from_array(o.color))),
+            colored: self.colored,
+        }
+    }
+
+    #[inline]
+    fn lerp(self, o: Self, t: f32) -> Self {
+        Self {
+            uv: self.uv.lerp(o.uv, t),
+            color: self.colour_or_white(|c| Interpolate::lerp(c, Vec4::from_array(o.color), t)),
+            colored: self.colored,
+        }
+    }
+
+    #[inline(always)]
+    fn combine3(v: [Self; 3], w: [f32; 3]) -> Self {
+        let colour = |i: usize| Vec4::from_array(v[i].color);
+        Self {
+            uv: Vec2::combine3([v[0].uv, v[1].uv, v[2].uv], w),
+            color: v[0].colour_or_white(|_| Vec4::combine3([colour(0), colour(1), colour(2)], w)),
+            colored: v[0].colored,
+        }
+    }
+}
+
+impl UnlitVarying {
+    /// `f` of the colour when it is interpolated, else white.
+    #[inline(always)]
+    fn colour_or_white(&self, f: impl FnOnce(Vec4) -> Vec4) -> [f32; 4] {
+        if self.colored {
+            f(Vec4::from_array(self.color)).to_array()
+        } else {
+            [1.0; 4]
+        }
+    }
+}
+
+/// Draws one primitive of an unlit material without fog (see the module's documentation).
+pub(crate) struct UnlitShader<'a> {
+    view_projection: Mat4,
+    primitive: &'a WorldPrimitive<'a>,
+    base_color: Vec4,
+    alpha_mode: AlphaMode,
+    /// The base colour texture and its mapping, when the material has one on set 0 or 1 (a
+    /// primitive has no other sets: the general path's mapping finds nothing there).
+    base: Option<(&'a PreparedTexture, TexCoordMapping)>,
+}
+
+impl<'a> UnlitShader<'a> {
+    /// The unlit shader that draws what `shader` would, when `shader` takes its unlit path
+    /// (an unlit material, no fog, parts interpolated as read); `None` otherwise.
+    pub(crate) fn of(shader: &MaterialShader<'a>) -> Option<Self> {
+        if !shader.takes_unlit_path() {
+            return None;
+        }
+        let m = &shader.material;
+        let base = m.base_texture.and_then(|slot| {
+            let texture = shader.textures.get(slot.texture)?;
+            (slot.mapping.set <= 1).then_some((texture, slot.mapping))
+        });
+        Some(Self {
+            view_projection: shader.view_projection,
+            primitive: shader.primitive,
+            base_color: m.base_color,
+            alpha_mode: m.alpha_mode,
+            base,
+        })
+    }
+}
+
+impl Shader for UnlitShader<'_> {
+    type Vertex = u32;
+    type Varying = UnlitVarying;
+
+    fn vertex(&self, &i: &u32) -> (Vec4, UnlitVarying) {
+        let i = i as usize;
+        let p = self.primitive;
+        let position = p.positions.get(i).copied().unwrap_or(Vec3::NAN);
+        let set = match self.base {
+            Some((_, mapping)) if mapping.set == 1 => &p.uv1,
+            Some(_) => &p.uv0,
+            None => &None,
+        };
+        let varying = UnlitVarying {
+            uv: set
+                .as_ref()
+                .and_then(|uv| uv.get(i))
+                .copied()
+                .unwrap_or_default(),
+            color: p
+                .colors
+                .as_ref()
+                .and_then(|c| c.get(i))
+                .copied()
+                .unwrap_or(Vec4::ONE)
+                .to_array(),
+            colored: p.colors.is_some(),
+        };
+        (self.view_projection * position.extend(1.0), varying)
+    }
+
+    #[inline(always)]
+    fn fragment(&self, f: &Fragment<'_, UnlitVarying>) -> Option<Vec4> {
+        let v = &f.varying;
+        let mut base = self.base_color * Vec4::from_array(v.color);
+        if let Some((texture, mapping)) = self.base {
+            let (duvdx, duvdy) = f.derivatives_of(|v: &UnlitVarying| v.uv);
+            let sample = UvSample {
+                uv: v.uv,
+                duvdx,
+                duvdy,
+            };
+            if let Some(mapped) = mapping.transform_sample(&sample) {
+                base *= texture.sample_base(&mapped);
+            }
+        }
+        let alpha = coverage_alpha(self.alpha_mode, base.w)?;
+        Some(base.truncate().extend(alpha))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn varying(k: f32, colored: bool) -> UnlitVarying {
+        UnlitVarying {
+            uv: Vec2::new(k, k + 0.5),
+            color: if colored {
+                [k, k + 1.0, k + 2.0, k + 3.0]
+            } else {
+                [1.0; 4]
+            },
+            colored,
+        }
+    }
+
+    #[test]
+    fn colours_interpolate_as_vec4_and_white_stays_exactly_white() {
+        // Weights whose f32 sum is not 1: three white vertices would not give white.
+        let w = [0.45_f32, 0.35, 0.2];
+        assert_ne!(w[0] + w[1] + w[2], 1.0);
+        let plain = UnlitVarying::combine3([1.0, 2.0, 3.0].map(|k| varying(k, false)), w);
+        assert_eq!(plain.color, [1.0; 4]);
+        let vs = [1.0, 2.0, 3.0].map(|k| varying(k, true));
+        let coloured = UnlitVarying::combine3(vs, w);
+        let as_vec4 = Vec4::combine3(vs.map(|v| Vec4::from_array(v.color)), w);
+        assert_eq!(coloured.color, as_vec4.to_array());
+        assert_eq!(coloured.uv, Vec2::combine3(vs.map(|v| v.uv), w));
+        // Clipping's lerp too.
+        let lerped = Interpolate::lerp(vs[0], vs[1], 0.25);
+        let expected = Interpolate::lerp(
+            Vec4::from_array(vs[0].color),
+            Vec4::from_array(vs[1].color),
+            0.25,
+        );
+        assert_eq!(lerped.color, expected.to_array());
+        assert_eq!(Interpolate::lerp(plain, plain, 0.3).color, [1.0; 4]);
+    }
+}
