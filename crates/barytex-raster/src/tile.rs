@@ -437,28 +437,27 @@ fn shade_multi<S: Shader, C: ColorFormat>(
     let edge = &piece.edge;
     let samples = tile.samples;
     let pattern = tile.pattern;
-    // Edge offsets of each sample from the pixel corner, when every pixel shares them.
-    let shared: Vec<[i64; 3]> = if pattern.is_uniform() {
-        (0..samples)
-            .map(|k| {
-                let (ox, oy) = pattern.fixed_offset(0, 0, k);
-                edge.offset(ox, oy)
-            })
-            .collect()
-    } else {
-        Vec::new()
-    };
+    // Edge offsets of each sample from the pixel corner, when every pixel shares them (on the
+    // stack: a list on the heap was an allocation per piece and tile).
+    let uniform = pattern.is_uniform();
+    let mut shared = [[0_i64; 3]; crate::samples::MAX_SAMPLES as usize];
+    if uniform {
+        for (k, d) in (0..samples).zip(&mut shared) {
+            let (ox, oy) = pattern.fixed_offset(0, 0, k);
+            *d = edge.offset(ox, oy);
+        }
+    }
     let centre = edge.offset(ONE / 2, ONE / 2);
     let rect = tile.rect;
     let mut sample_e = [[0_i64; 3]; crate::samples::MAX_SAMPLES as usize];
     edge.for_each_block_pixel(rect, (0, ONE - 1), (0, 0), |x, y, e, all| {
         let mut covered = 0_u32;
         for k in 0..samples {
-            let d = if shared.is_empty() {
+            let d = if uniform {
+                shared[k as usize]
+            } else {
                 let (ox, oy) = pattern.fixed_offset(x, y, k);
                 edge.offset(ox, oy)
-            } else {
-                shared[k as usize]
             };
             let s: [i64; 3] = core::array::from_fn(|i| e[i] + d[i]);
             sample_e[k as usize] = s;
