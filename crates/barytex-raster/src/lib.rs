@@ -45,6 +45,7 @@ mod draw;
 mod edge;
 mod error;
 mod format;
+mod paired;
 mod pieces;
 mod primitives;
 mod run_bound;

@@ -37,6 +37,47 @@ pub trait Shader: Sync {
 
     /// The linear-light, straight-alpha colour of a fragment, or `None` to discard it.
     fn fragment(&self, fragment: &Fragment<'_, Self::Varying>) -> Option<Vec4>;
+
+    /// Whether single-sampled draws hand this shader's fragments over two at a time, through
+    /// [`fragment_pair`](Self::fragment_pair) (a piece's odd last fragment through
+    /// [`fragment`](Self::fragment)). Worth it for a shader whose fragment is one long
+    /// dependency chain (a texture lookup's footprint, level, addresses, loads, filtering):
+    /// two chains written side by side overlap in the processor where two calls one after the
+    /// other do not. The image is the same either way.
+    const PAIRS: bool = false;
+
+    /// The colours of two fragments of one triangle at different pixels:
+    /// `[self.fragment(a), self.fragment(b)]`, which an override must return too (interleaving
+    /// the two computations is the point of overriding it).
+    ///
+    /// ```
+    /// use barytex_raster::{Fragment, Shader};
+    /// use glam::{Vec3, Vec4};
+    ///
+    /// struct Grey;
+    /// impl Shader for Grey {
+    ///     type Vertex = Vec3;
+    ///     type Varying = f32;
+    ///     fn vertex(&self, v: &Vec3) -> (Vec4, f32) { (v.extend(1.0), v.x) }
+    ///     fn fragment(&self, f: &Fragment<'_, f32>) -> Option<Vec4> {
+    ///         Some(Vec4::new(f.varying, f.varying, f.varying, 1.0))
+    ///     }
+    ///     const PAIRS: bool = true;
+    ///     fn fragment_pair(&self, a: &Fragment<'_, f32>, b: &Fragment<'_, f32>) -> [Option<Vec4>; 2] {
+    ///         // Both varyings at once (a real shader would interleave longer work).
+    ///         let [x, y] = [a.varying, b.varying];
+    ///         [Some(Vec4::new(x, x, x, 1.0)), Some(Vec4::new(y, y, y, 1.0))]
+    ///     }
+    /// }
+    /// ```
+    #[inline(always)]
+    fn fragment_pair(
+        &self,
+        a: &Fragment<'_, Self::Varying>,
+        b: &Fragment<'_, Self::Varying>,
+    ) -> [Option<Vec4>; 2] {
+        [self.fragment(a), self.fragment(b)]
+    }
 }
 
 /// What the fragment stage sees at one pixel. The varying is interpolated eagerly; its screen

@@ -7,6 +7,7 @@ use glam::{UVec2, Vec4};
 use crate::assemble::Piece;
 use crate::draw::DrawStats;
 use crate::format::ColorFormat;
+use crate::paired::shade_centres_paired;
 use crate::run_depth::for_each_run_pixel;
 use crate::samples::SamplePattern;
 use crate::shader::PieceContext;
@@ -15,8 +16,7 @@ use crate::target::{TILE, premultiply};
 use crate::{Fragment, Shader};
 
 /// The pixels of a tile (its buffers' length at one sample per pixel).
-#[cfg(target_arch = "x86_64")]
-const TILE_PIXELS: usize = (TILE * TILE) as usize;
+pub(crate) const TILE_PIXELS: usize = (TILE * TILE) as usize;
 
 /// A tile's slice of the target and what it needs to address it.
 pub(crate) struct TileTarget<'a, C: ColorFormat> {
@@ -199,6 +199,22 @@ fn shade_centres<S: Shader, C: ColorFormat, const OVER: bool, const MASKED: bool
     passes: impl Fn(f32, f32) -> bool,
     store: impl Fn(f32, f32) -> f32,
 ) {
+    if S::PAIRS
+        && let Ok(color) = <&mut [C::Sample; TILE_PIXELS]>::try_from(&mut *tile.color)
+        && let Ok(depth) = <&mut [f32; TILE_PIXELS]>::try_from(&mut *tile.depth)
+    {
+        let target = (tile.rect, tile.origin, tile.mask);
+        return shade_centres_paired::<S, C, OVER, MASKED>(
+            piece,
+            context,
+            shader,
+            target,
+            (color, depth),
+            stats,
+            passes,
+            store,
+        );
+    }
     let depths = piece.depth;
     let inv_area = piece.edge.inv_area();
     let (ox, oy) = tile.origin;

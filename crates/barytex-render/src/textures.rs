@@ -51,6 +51,21 @@ impl PreparedTexture {
             other => other.sample(mapped.uv, mapped.duvdx, mapped.duvdy),
         }
     }
+
+    /// [`sample_base`](Self::sample_base) at two points, the lookups interleaved for the sRGB
+    /// format ([`TextureSampler::sample_pair`](barytex_texture::TextureSampler::sample_pair));
+    /// the same values.
+    #[inline(always)]
+    pub(crate) fn sample_base_pair(
+        &self,
+        a: &barytex_uv::UvSample,
+        b: &barytex_uv::UvSample,
+    ) -> [Vec4; 2] {
+        match self {
+            Self::Srgba8(s) => s.sample_pair([a.uv, a.duvdx, a.duvdy], [b.uv, b.duvdx, b.duvdy]),
+            other => [other.sample_base(a), other.sample_base(b)],
+        }
+    }
 }
 
 impl barytex_texture::Sampler for PreparedTexture {

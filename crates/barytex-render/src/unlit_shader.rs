@@ -155,21 +155,61 @@ impl Shader for UnlitShader<'_> {
 
     #[inline(always)]
     fn fragment(&self, f: &Fragment<'_, UnlitVarying>) -> Option<Vec4> {
-        let v = &f.varying;
-        let mut base = self.base_color * Vec4::from_array(v.color);
-        if let Some((texture, mapping)) = self.base {
-            let (duvdx, duvdy) = f.derivatives_of(|v: &UnlitVarying| v.uv);
-            let sample = UvSample {
-                uv: v.uv,
-                duvdx,
-                duvdy,
-            };
-            if let Some(mapped) = mapping.transform_sample(&sample) {
-                base *= texture.sample_base(&mapped);
-            }
+        let texel = self.base.and_then(|(texture, mapping)| {
+            let mapped = mapping.transform_sample(&uv_sample(f))?;
+            Some(texture.sample_base(&mapped))
+        });
+        self.finish(f, texel)
+    }
+
+    /// Two fragments with their texture lookups interleaved
+    /// ([`PreparedTexture::sample_base_pair`]): the lookup is most of an unlit fragment's
+    /// time, one long dependency chain. Unlit Avocado at 1024², one thread: the shading
+    /// stage 23.3 → 17.5 ms (see the commit that made it).
+    const PAIRS: bool = true;
+
+    #[inline(always)]
+    fn fragment_pair(
+        &self,
+        a: &Fragment<'_, UnlitVarying>,
+        b: &Fragment<'_, UnlitVarying>,
+    ) -> [Option<Vec4>; 2] {
+        let Some((texture, mapping)) = self.base else {
+            return [self.finish(a, None), self.finish(b, None)];
+        };
+        let (Some(ma), Some(mb)) = (
+            mapping.transform_sample(&uv_sample(a)),
+            mapping.transform_sample(&uv_sample(b)),
+        ) else {
+            return [self.fragment(a), self.fragment(b)];
+        };
+        let [ta, tb] = texture.sample_base_pair(&ma, &mb);
+        [self.finish(a, Some(ta)), self.finish(b, Some(tb))]
+    }
+}
+
+impl UnlitShader<'_> {
+    /// The fragment's colour from its base texture's texel (`None`: no texture, or a mapping
+    /// undefined at the pixel): base colour factor × vertex colour × texel, and the alpha mode.
+    #[inline(always)]
+    fn finish(&self, f: &Fragment<'_, UnlitVarying>, texel: Option<Vec4>) -> Option<Vec4> {
+        let mut base = self.base_color * Vec4::from_array(f.varying.color);
+        if let Some(texel) = texel {
+            base *= texel;
         }
         let alpha = coverage_alpha(self.alpha_mode, base.w)?;
         Some(base.truncate().extend(alpha))
+    }
+}
+
+/// The base texture's coordinates at a fragment, with their screen derivatives.
+#[inline(always)]
+fn uv_sample(f: &Fragment<'_, UnlitVarying>) -> UvSample {
+    let (duvdx, duvdy) = f.derivatives_of(|v: &UnlitVarying| v.uv);
+    UvSample {
+        uv: f.varying.uv,
+        duvdx,
+        duvdy,
     }
 }
 

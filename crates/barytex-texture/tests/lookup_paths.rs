@@ -265,3 +265,56 @@ fn short_paths_keep_the_documented_values_for_bad_input() {
             .is_finite()
     );
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// `sample_pair` gives what two `sample` calls give, bit for bit, on every path: power-of-two
+    /// and other sides, every pair of address modes, opaque and translucent texels, clamped
+    /// levels, two footprints that choose different levels, and non-finite coordinates.
+    #[test]
+    fn pairs_of_lookups_equal_single_lookups(
+        log_w in 0_u32..7,
+        log_h in 0_u32..7,
+        odd in any::<bool>(),
+        seed in any::<u64>(),
+        mode_u in 0_usize..4,
+        mode_v in 0_usize..4,
+        uv in (-3.0e3_f32..3.0e3, -3.0_f32..3.0),
+        ddx in (-0.5_f32..0.5, -0.5_f32..0.5),
+        ddy in (-0.5_f32..0.5, -0.5_f32..0.5),
+        other_scale in prop_oneof![Just(1.0_f32), Just(0.01), Just(40.0), Just(f32::NAN)],
+        opaque in any::<bool>(),
+    ) {
+        let (w, h) = (1 << log_w, 1 << log_h);
+        let (w, h) = if odd { (w + 3, h + 1) } else { (w, h) };
+        let mut base = texture(w, h, seed);
+        if opaque {
+            for t in base.texels_mut() {
+                t.0[3] = 255;
+            }
+        }
+        let chain = MipChain::generate(base, &MipOptions::default()).expect("small");
+        let modes = SamplerDescriptor {
+            address_mode_u: ADDRESS_MODES[mode_u],
+            address_mode_v: ADDRESS_MODES[mode_v],
+            ..SamplerDescriptor::trilinear()
+        };
+        let clamped = SamplerDescriptor { lod_min_clamp: 0.5, lod_max_clamp: 2.25, ..modes };
+        let repeat = SamplerDescriptor::trilinear().with_address_mode(AddressMode::Repeat);
+        let (uv, ddx, ddy) = (Vec2::from(uv), Vec2::from(ddx), Vec2::from(ddy));
+        let a = [uv, ddx, ddy];
+        let b = [uv * 0.5 + Vec2::splat(0.25), ddx * other_scale, ddy];
+        let non_finite = [Vec2::new(f32::NAN, 0.5), ddx, ddy];
+        let mut descriptors = configurations();
+        descriptors.extend([modes, clamped, repeat]);
+        for descriptor in descriptors {
+            let sampler = TextureSampler::new(chain.clone(), descriptor);
+            for (a, b) in [(a, b), (b, a), (a, a), (non_finite, a), (a, non_finite)] {
+                let [pa, pb] = sampler.sample_pair(a, b);
+                prop_assert_eq!(bits(pa), bits(sampler.sample(a[0], a[1], a[2])), "{:?}", descriptor);
+                prop_assert_eq!(bits(pb), bits(sampler.sample(b[0], b[1], b[2])), "{:?}", descriptor);
+            }
+        }
+    }
+}

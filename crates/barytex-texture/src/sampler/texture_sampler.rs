@@ -10,6 +10,25 @@ use crate::sampler::{
 };
 use crate::{MipChain, Texel, Texture2d};
 
+/// `$sampler.$method::<OPAQUE, CLAMP_U, CLAMP_V>($args)` for the run-time flags `$opaque` and
+/// `$clamp` (`[u, v]`): the eight instances of a resolved kernel, chosen in one place.
+macro_rules! resolved_kernel {
+    ($opaque:expr, $clamp:expr, $sampler:ident.$method:ident($($arg:expr),*)) => {
+        match ($opaque, $clamp) {
+            (true, [false, false]) => $sampler.$method::<true, false, false>($($arg),*),
+            (true, [false, true]) => $sampler.$method::<true, false, true>($($arg),*),
+            (true, [true, false]) => $sampler.$method::<true, true, false>($($arg),*),
+            (true, [true, true]) => $sampler.$method::<true, true, true>($($arg),*),
+            (false, [false, false]) => $sampler.$method::<false, false, false>($($arg),*),
+            (false, [false, true]) => $sampler.$method::<false, false, true>($($arg),*),
+            (false, [true, false]) => $sampler.$method::<false, true, false>($($arg),*),
+            (false, [true, true]) => $sampler.$method::<false, true, true>($($arg),*),
+        }
+    };
+}
+// After the macro: the module uses it.
+mod lookup_pair;
+
 /// A texture (its mip chain) with the sampler state that filters it.
 ///
 /// ```
@@ -366,16 +385,7 @@ impl<T: Texel> TextureSampler<T> {
         let AtLod::ResolvedTrilinear { opaque, clamp } = self.at_lod else {
             return self.filter_premultiplied(uv, lod);
         };
-        match (opaque, clamp) {
-            (true, [false, false]) => self.resolved_at::<true, false, false>(uv, lod),
-            (true, [false, true]) => self.resolved_at::<true, false, true>(uv, lod),
-            (true, [true, false]) => self.resolved_at::<true, true, false>(uv, lod),
-            (true, [true, true]) => self.resolved_at::<true, true, true>(uv, lod),
-            (false, [false, false]) => self.resolved_at::<false, false, false>(uv, lod),
-            (false, [false, true]) => self.resolved_at::<false, false, true>(uv, lod),
-            (false, [true, false]) => self.resolved_at::<false, true, false>(uv, lod),
-            (false, [true, true]) => self.resolved_at::<false, true, true>(uv, lod),
-        }
+        resolved_kernel!(opaque, clamp, self.resolved_at(uv, lod))
     }
 
     /// The mean of the plan's probes at a (biased, clamped) level of detail, premultiplied:
@@ -390,16 +400,7 @@ impl<T: Texel> TextureSampler<T> {
             }
             return sum / plan.count as f32;
         };
-        match (opaque, clamp) {
-            (true, [false, false]) => self.probes_resolved::<true, false, false>(uv, plan, lod),
-            (true, [false, true]) => self.probes_resolved::<true, false, true>(uv, plan, lod),
-            (true, [true, false]) => self.probes_resolved::<true, true, false>(uv, plan, lod),
-            (true, [true, true]) => self.probes_resolved::<true, true, true>(uv, plan, lod),
-            (false, [false, false]) => self.probes_resolved::<false, false, false>(uv, plan, lod),
-            (false, [false, true]) => self.probes_resolved::<false, false, true>(uv, plan, lod),
-            (false, [true, false]) => self.probes_resolved::<false, true, false>(uv, plan, lod),
-            (false, [true, true]) => self.probes_resolved::<false, true, true>(uv, plan, lod),
-        }
+        resolved_kernel!(opaque, clamp, self.probes_resolved(uv, plan, lod))
     }
 
     /// [`probes_premultiplied`](Self::probes_premultiplied) through one resolved kernel:
