@@ -10,7 +10,7 @@
 
 use glam::Vec4;
 
-use super::polyphase_box::axis_taps;
+use super::polyphase_box::{axis_taps, weighted_sum};
 use crate::mip_chain::level_size;
 use crate::texture2d::try_vec_with_capacity;
 use crate::{Limits, Texel, Texture2d, TextureError};
@@ -103,16 +103,9 @@ fn reduce_rows(a: &[Vec4], b: Option<&[Vec4]>, sw: u32, sh: u32, out: &mut Vec<V
             let rows = [Some(a), b];
             for x in 0..(sw / 2).max(1) {
                 let tx = axis_taps(x, sw);
-                let mut sum = Vec4::ZERO;
-                for (j, wy) in ty.weights.iter().enumerate().take(ty.count) {
-                    let source = rows[j].unwrap_or(a);
-                    let mut acc = Vec4::ZERO;
-                    for (i, wx) in tx.weights.iter().enumerate().take(tx.count) {
-                        acc += source[(tx.first as usize) + i] * *wx;
-                    }
-                    sum += acc * *wy;
-                }
-                out.push(sum);
+                out.push(weighted_sum(&tx, &ty, |sx, sy| {
+                    rows[sy as usize].unwrap_or(a)[sx as usize]
+                }));
             }
         }
     }
