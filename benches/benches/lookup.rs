@@ -17,6 +17,9 @@
 //! Before the groups run, the largest difference between each kernel and the sampler over the
 //! scan is printed and must be within 2⁻²² (1 ulp at 0.5, relative to the [0, 1] range): both
 //! compute the same formulas; the kernel's level of detail is computed in f32 rather than f64.
+//! The two trilinear groups also time `sample_pair` over the same scan, two lookups at a time
+//! and interleaved (the renderer's unlit fragment loop), checked first to give `sample`'s
+//! results bit for bit.
 //! Run with `cargo bench -p barytex-benches --bench lookup`.
 
 use std::hint::black_box;
@@ -190,6 +193,7 @@ fn bench(c: &mut Criterion) {
         &mag_uv,
         |uv| nearest.sample(uv, mag_dx, mag_dy),
         |uv| nearest_kernel(&base, uv),
+        None,
     );
     compare(
         c,
@@ -197,21 +201,36 @@ fn bench(c: &mut Criterion) {
         &mag_uv,
         |uv| bilinear.sample(uv, mag_dx, mag_dy),
         |uv| bilinear_kernel(&base, uv),
+        None,
     );
+    let constant: Vec<[Vec2; 3]> = min_uv.iter().map(|&uv| [uv, min_dx, min_dy]).collect();
     compare(
         c,
         "trilinear",
         &min_uv,
         |uv| trilinear.sample(uv, min_dx, min_dy),
         |uv| trilinear_kernel(&chain, uv, min_dx, min_dy),
+        Some((&trilinear, &constant)),
     );
+    let varying = varying_scan(1.6);
+    let lookups: Vec<[Vec2; 3]> = varying.iter().map(|&(uv, x, y)| [uv, x, y]).collect();
     compare(
         c,
         "trilinear_varying",
-        &varying_scan(1.6),
+        &varying,
         |(uv, ddx, ddy)| trilinear.sample(uv, ddx, ddy),
         |(uv, ddx, ddy)| trilinear_kernel(&chain, uv, ddx, ddy),
+        Some((&trilinear, &lookups)),
     );
+}
+
+/// The scan's lookups through `sample_pair`, two at a time.
+fn fill_pairs(out: &mut [Vec4], lookups: &[[Vec2; 3]], sampler: &TextureSampler<Srgba8>) {
+    for (o, l) in out.chunks_exact_mut(2).zip(lookups.chunks_exact(2)) {
+        let [a, b] = sampler.sample_pair(l[0], l[1]);
+        o[0] = a;
+        o[1] = b;
+    }
 }
 
 #[inline]
@@ -222,13 +241,16 @@ fn fill<P: Copy>(out: &mut [Vec4], uvs: &[P], lookup: impl Fn(P) -> Vec4) {
 }
 
 /// Checks that the kernel gives the sampler's results, then times both in one group. A lookup's
-/// input `P` is its coordinate, or its coordinate and derivatives.
+/// input `P` is its coordinate, or its coordinate and derivatives. With `many` (the sampler and
+/// the same lookups as `[uv, ddx, ddy]`), the group also times `sample_pair` over the scan two
+/// at a time, after checking that it gives `sample`'s results bit for bit.
 fn compare<P: Copy>(
     c: &mut Criterion,
     name: &str,
     uvs: &[P],
     sampler: impl Fn(P) -> Vec4,
     kernel: impl Fn(P) -> Vec4,
+    many: Option<(&TextureSampler<Srgba8>, &[[Vec2; 3]])>,
 ) {
     let mut out = vec![Vec4::ZERO; uvs.len()];
     let mut reference = out.clone();
@@ -237,6 +259,11 @@ fn compare<P: Copy>(
     let d = max_difference(&out, &reference);
     assert!(d <= 2f32.powi(-22), "{name}: kernel differs by {d:e}");
     println!("{name}: max |sampler − minimal kernel| over the scan {d:.2e}");
+    if let Some((s, lookups)) = many {
+        let mut other = vec![Vec4::ZERO; uvs.len()];
+        fill_pairs(&mut other, lookups, s);
+        assert!(other.iter().zip(&out).all(|(a, b)| a.to_array() == b.to_array()));
+    }
 
     let mut group = c.benchmark_group(format!("lookup_srgba8_repeat_{name}"));
     group.throughput(Throughput::Elements(uvs.len() as u64));
@@ -246,6 +273,11 @@ fn compare<P: Copy>(
     group.bench_function("minimal_kernel", |b| {
         b.iter(|| fill(&mut out, black_box(uvs), &kernel));
     });
+    if let Some((s, lookups)) = many {
+        group.bench_function("barytex_sample_pair", |b| {
+            b.iter(|| fill_pairs(&mut out, black_box(lookups), s));
+        });
+    }
     group.finish();
 }
 
