@@ -262,7 +262,12 @@ fn compare<P: Copy>(
     if let Some((s, lookups)) = many {
         let mut other = vec![Vec4::ZERO; uvs.len()];
         fill_pairs(&mut other, lookups, s);
-        assert!(other.iter().zip(&out).all(|(a, b)| a.to_array() == b.to_array()));
+        assert!(
+            other
+                .iter()
+                .zip(&out)
+                .all(|(a, b)| a.to_array() == b.to_array())
+        );
     }
 
     let mut group = c.benchmark_group(format!("lookup_srgba8_repeat_{name}"));
