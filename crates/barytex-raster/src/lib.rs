@@ -48,6 +48,7 @@ mod format;
 mod paired;
 mod pieces;
 mod primitives;
+mod resolve;
 mod run_bound;
 mod run_depth;
 mod sample_mask;

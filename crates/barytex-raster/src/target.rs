@@ -353,9 +353,7 @@ impl<C: ColorFormat> Framebuffer<C> {
         let n = self.width as usize * self.height as usize;
         let mut out = try_filled(n, Vec4::ZERO)?;
         for (y, row) in out.chunks_exact_mut(self.width as usize).enumerate() {
-            for (x, out) in row.iter_mut().enumerate() {
-                *out = unpremultiply(self.resolved(x as u32, y as u32));
-            }
+            self.resolve_row(y as u32, row, |c| c);
         }
         Ok(out)
     }
@@ -403,8 +401,7 @@ impl<C: ColorFormat> Framebuffer<C> {
     }
 
     /// Every pixel resolved, un-premultiplied and encoded by `encode`, rows in parallel on the
-    /// current rayon pool (the correctly rounded sRGB encode is most of the cost); the result
-    /// does not depend on the thread count.
+    /// current rayon pool; the result does not depend on the thread count.
     #[cfg(feature = "texture")]
     fn encoded<T: Texel>(
         &self,
@@ -422,11 +419,7 @@ impl<C: ColorFormat> Framebuffer<C> {
         texels
             .par_chunks_mut(w.max(1))
             .enumerate()
-            .for_each(|(y, row)| {
-                for (x, texel) in row.iter_mut().enumerate() {
-                    *texel = encode(unpremultiply(self.resolved(x as u32, y as u32)));
-                }
-            });
+            .for_each(|(y, row)| self.resolve_row(y as u32, row, &encode));
         Texture2d::from_texels_with_limits(self.width, self.height, texels, &Limits::UNLIMITED)
     }
 }
