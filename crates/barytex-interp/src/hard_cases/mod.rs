@@ -104,6 +104,11 @@ fn v(x: f32, y: f32) -> Vec2 {
     Vec2::new(x, y)
 }
 
+/// A quad from its corners' f32 bit patterns (the cases found by search, exactly).
+fn bits_quad(corners: [[u32; 2]; 4]) -> [Vec2; 4] {
+    corners.map(|c| Vec2::from_array(c.map(f32::from_bits)))
+}
+
 /// The 2D triangle table: slivers of aspect 1e-3 … 1e-7, offsets 1e4 … 1e7, tiny scales down to
 /// 1e-30, subnormal coordinates, huge coordinates, points exactly on edges and vertices, and
 /// points one ulp off an edge.
@@ -246,7 +251,9 @@ pub fn triangles_3d() -> impl Iterator<Item = Triangle3Case> {
 
 /// The quad table: Denisjuk's Example 10 quad, an exact parallelogram (A = 0, where thresholded
 /// solvers switch branches), a near-parallelogram, a trapezoid, a sliver, corners of mixed
-/// magnitude (1e-30 beside 1), tiny scales down to 1e-30, subnormal size and offsets 1e4 … 1e7.
+/// magnitude (1e-30 beside 1), tiny scales down to 1e-30, subnormal size, two exact edge points
+/// next to a double root (a corner of a κ ≈ 9.1e3 quad, the midpoint of a 2-ulp edge of a
+/// κ ≈ 2.2e7 quad) and offsets 1e4 … 1e7.
 pub fn quads() -> impl Iterator<Item = QuadCase> {
     let example = [v(0.0, 0.0), v(4.0, 0.0), v(5.0, 3.0), v(0.0, 2.0)];
     let fixed = [
@@ -291,6 +298,32 @@ pub fn quads() -> impl Iterator<Item = QuadCase> {
             parameter: 1e-40,
             quad: [v(0.0, 0.0), v(4e-40, 0.0), v(5e-40, 3e-40), v(0.0, 2e-40)],
             alpha_beta: v(0.5, 0.25),
+        },
+        // Two exact edge points next to a double root of the quadratic in α, found by a
+        // brute-force search over edge points (2026-12-03): the roots there are off by more
+        // than a solver's fixed slack, and a solver that trusts them answers "outside".
+        // The parameter is the quad's condition number κ.
+        QuadCase {
+            name: "double root at corner w",
+            parameter: 9.1e3,
+            quad: bits_quad([
+                [880_192_450, 3_039_685_282],
+                [1_075_184_065, 1_055_254_038],
+                [1_065_994_831, 1_073_845_848],
+                [1_065_992_186, 1_073_845_740],
+            ]),
+            alpha_beta: v(0.0, 1.0),
+        },
+        QuadCase {
+            name: "midpoint of a 2-ulp edge",
+            parameter: 2.2e7,
+            quad: bits_quad([
+                [3_200_739_966, 1_071_093_962],
+                [1_114_242_872, 1_057_199_641],
+                [1_105_605_703, 1_116_904_374],
+                [1_105_605_701, 1_116_904_374],
+            ]),
+            alpha_beta: v(0.5, 1.0),
         },
     ];
     let tiny = TINY.into_iter().map(move |s| QuadCase {

@@ -210,8 +210,9 @@ pub(super) fn run(settings: Settings, progress: &mut dyn FnMut(&str)) -> Section
             format!(
                 "`barytex_interp::hard_cases::quads()`: Example 10 (the quad of Exercise IV.7 in \
                  Buss, *3D Computer Graphics*, 2003), an exact parallelogram, a \
-                 near-parallelogram, a trapezoid, a sliver, tiny scales to 1e-30, subnormal size \
-                 and offsets 1e4 … 1e7.{}",
+                 near-parallelogram, a trapezoid, a sliver, corners of mixed magnitude, tiny \
+                 scales to 1e-30, subnormal size, two exact edge points next to a double root \
+                 (parameter: the quad's κ) and offsets 1e4 … 1e7.{}",
                 if unreferenced.is_empty() {
                     String::new()
                 } else {
