@@ -19,12 +19,15 @@ Both sides draw glTF's unlit model (base colour factor × base colour texture ×
 trilinearly (barytex `--filter trilinear`; OpenGL LINEAR_MIPMAP_LINEAR after glGenerateMipmap),
 with the view and projection barytex prints (`--print-camera`, automatic camera).
 
-- barytex: `barytex render FILE --shading unlit --filter trilinear --aa none --threads T --stats`,
-  one process per run; the frame is the draw (`raster` + `shade` of the `stages:` line:
-  rasterization and shading into barytex's float target, cleared). Load, PNG decode, mips, the
+- barytex: `barytex render FILE --shading unlit --filter trilinear --aa none --threads T --stats
+  --frames 1+N`, one process drawing the prepared scene 1 + N times; the frame is the draw
+  (rasterization and shading into barytex's float target, cleared), median of the N warm frames
+  after the first, as llvmpipe's are timed after warm-up frames. With `--cold`, one process per
+  frame instead (N of them after a warm-up process): the first draw of a process, which touches
+  fresh memory (its `raster` + `shade` of the `stages:` line). Load, PNG decode, mips, the
   target's creation (`target`: allocation and the first clear, which touches fresh pages; llvmpipe
   creates its framebuffer with the context, outside its frames) and encode + write are reported
-  apart. Median over N runs.
+  apart.
 - llvmpipe: one subprocess per thread count and round, LP_NUM_THREADS=T set before the context exists;
   scene upload and mip generation are timed apart (each followed by glFinish); the frame is
   clear + draws + glFinish + glReadPixels into memory, median of N frames after warm-up frames.
@@ -125,11 +128,20 @@ def check_scene(path, max_bytes):
 # barytex side
 
 
-def barytex_command(binary, scene, size, threads, out):
+def barytex_command(binary, scene, size, threads, out, frames=1):
     return [str(binary), "render", str(scene), "--camera", "auto", "--shading", "unlit",
             "--filter", "trilinear", "--aa", "none", "--size", f"{size[0]}x{size[1]}",
             "--threads", str(threads), "--background", ",".join(map(str, BACKGROUND_SRGB8)),
-            "--stats", "--print-camera", "-o", str(out)]
+            "--stats", "--print-camera", "--frames", str(frames), "-o", str(out)]
+
+
+def parse_frames(text):
+    """`frames: N, draw … of the first A ms; of the M after it median B ms, min C ms, max D ms`
+    → (B, C, D) in ms."""
+    m = re.search(r"^frames: .* median ([0-9.]+) ms, min ([0-9.]+) ms, max ([0-9.]+) ms$", text, re.M)
+    if m is None:
+        raise ValueError("no `frames:` line in barytex's output (is --frames supported?)")
+    return tuple(float(v) for v in m.groups())
 
 
 def parse_stages(text):
@@ -156,8 +168,24 @@ def parse_matrices(text):
     return out["view"], out["projection"]
 
 
-def run_barytex(binary, scene, size, threads, runs, out_png):
-    """Median stage times (ms) over `runs` processes after one warm-up, the matrices, the image."""
+def run_barytex(binary, scene, size, threads, runs, out_png, cold=False):
+    """Median frame (ms) of `runs` warm frames drawn by one process after its first (`--frames`),
+    or with `cold`, of `runs` processes after one warm-up, each drawing one frame (the first frame
+    of a process); the stage times, the matrices, the image. `runs` 0: one process, for the
+    camera."""
+    if runs == 0 or not cold:
+        cmd = barytex_command(binary, scene, size, threads, out_png, frames=runs + 1)
+        run = subprocess.run(cmd, capture_output=True, text=True)
+        if run.returncode != 0:
+            raise RuntimeError((run.stderr.strip() or run.stdout.strip() or "failed").splitlines()[-1])
+        text = run.stdout
+        view, projection = parse_matrices(text)
+        if runs == 0:
+            return {"view": view.tolist(), "projection": projection.tolist()}
+        stages = parse_stages(text)
+        median, low, high = parse_frames(text)
+        return {"stages": stages, "stage_samples": [stages], "frame_ms": median, "frames_ms": [low, median, high],
+                "view": view.tolist(), "projection": projection.tolist(), "stats": text}
     samples = []
     text = ""
     for i in range(runs + 1):
@@ -170,8 +198,6 @@ def run_barytex(binary, scene, size, threads, runs, out_png):
         if i > 0:  # the first run warms the file cache and the binary
             samples.append(stages)
     view, projection = parse_matrices(text)
-    if not samples:
-        return {"view": view.tolist(), "projection": projection.tolist()}
     stages = {k: statistics.median(s[k] for s in samples) for k in samples[0]}
     frames = [s["raster"] + s["shade"] for s in samples]
     return {"stages": stages, "stage_samples": samples, "frame_ms": statistics.median(frames), "frames_ms": frames,
@@ -373,6 +399,9 @@ def main():
     ap.add_argument("--rounds", type=int, default=1,
                     help="repeat both sides this many times; the ratio is the median of the rounds' "
                          "ratios, with their range (default %(default)s)")
+    ap.add_argument("--cold", action="store_true",
+                    help="time barytex's first frame in a process, one process per frame (before 2026-12-04 "
+                         "the only way), instead of warm frames drawn by one process with --frames")
     ap.add_argument("--warmup", type=int, default=3, help="llvmpipe frames before timing (default %(default)s)")
     ap.add_argument("--gl-target", choices=["srgb8", "rgba32f"], default="srgb8",
                     help="llvmpipe's colour target: GL_SRGB8_ALPHA8 with GL_FRAMEBUFFER_SRGB, or "
@@ -429,10 +458,11 @@ def main():
     for r in range(args.rounds):
         for t in threads:
             for s in scenes:
-                print(f"round {r + 1}/{args.rounds}: barytex {s['name']}, --threads {t}, {args.frames} runs …",
+                what = f"{args.frames} runs" if args.cold else f"1 + {args.frames} frames"
+                print(f"round {r + 1}/{args.rounds}: barytex {s['name']}, --threads {t}, {what} …",
                       file=sys.stderr)
                 png = out / f"{safe(s['name'])}-barytex-t{t}.png"
-                bx[s["name"], t].append(run_barytex(binary, s["path"], size, t, args.frames, png))
+                bx[s["name"], t].append(run_barytex(binary, s["path"], size, t, args.frames, png, args.cold))
             print(f"round {r + 1}/{args.rounds}: llvmpipe, LP_NUM_THREADS={t}, {args.frames} frames …",
                   file=sys.stderr)
             job = {"size": size, "frames": args.frames, "warmup": args.warmup, "target": args.gl_target,
@@ -536,8 +566,12 @@ def write_markdown(path, rows, threads, table, command, version, renderer, size,
         f"OpenGL {renderer}, {os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f} at the end.",
         "",
         "Same scene, automatic camera (barytex's printed view and projection on both sides), unlit, "
-        "trilinear, no anti-aliasing, depth test, background #76767c. barytex frame: `raster` + "
-        f"`shade` of `--stats` ({args.frames} processes per round, `--threads N`); llvmpipe frame: clear + "
+        "trilinear, no anti-aliasing, depth test, background #76767c. barytex frame: "
+        + (f"`raster` + `shade` of `--stats` ({args.frames} processes per round, `--threads N`, `--cold`)"
+           if args.cold else
+           f"the draw (raster + shade) of `--frames {args.frames + 1}`, median of the {args.frames} warm frames "
+           "after the first (one process per round, `--threads N`)")
+        + "; llvmpipe frame: clear + "
         f"draws + glFinish + glReadPixels into a {'GL_SRGB8_ALPHA8' if args.gl_target == 'srgb8' else 'RGBA32F'} "
         f"target ({args.frames} frames per round after {args.warmup} warm-up, `LP_NUM_THREADS=N`); "
         f"{args.rounds} round(s), each measuring both sides back to back. Frame times are medians over "
@@ -562,8 +596,10 @@ def write_markdown(path, rows, threads, table, command, version, renderer, size,
         "ratios are indicative, not exact. llvmpipe's LP_NUM_THREADS counts rasterizer threads; "
         "vertex processing and setup run on the calling thread besides them. The barytex frame "
         "excludes the encode to 8 bits (reported apart); the llvmpipe frame includes the write "
-        "to its target and the readback. Each barytex frame is the only one of its process: the "
-        "target's creation (allocation, and the clear that first touches its pages) is reported "
+        "to its target and the readback. "
+        + ("Each barytex frame is the only one of its process: the " if args.cold else
+           "Each barytex frame draws into a new target: the ")
+        + "target's creation (allocation, and the clear that first touches its pages) is reported "
         "apart as `target`, as llvmpipe creates its framebuffer with the context; llvmpipe's frames "
         "are warm frames reusing its framebuffer and compiled shaders and include a clear. Mips differ: barytex filters premultiplied alpha in linear "
         "light, correctly rounded; glGenerateMipmap on this driver averages "

@@ -46,6 +46,7 @@ mod options;
 mod passes;
 mod portals;
 mod prepare;
+mod prepared_scene;
 mod raster_only;
 mod stats;
 mod surface;
@@ -62,6 +63,7 @@ use barytex_texture::TextureError;
 pub use framing::{CameraSource, RenderCamera, auto_camera, scene_bounds, scene_camera};
 pub use options::{AntiAliasing, CameraChoice, Filter, RenderOptions, ResolvedFilter, Shading};
 pub use prepare::choose_camera;
+pub use prepared_scene::PreparedScene;
 pub use stats::RenderStats;
 pub use view_draw::MAX_PORTAL_VIEWS_PER_PASS;
 
@@ -317,20 +319,7 @@ fn render_varyings(
     varyings: Varyings,
     on_pass: &mut dyn FnMut(u32, u32),
 ) -> Result<Rendered, RenderError> {
-    let (width, height) = (options.width, options.height);
-    if width == 0 || height == 0 || width > 16_384 || height > 16_384 {
-        return Err(RenderError::InvalidOption(format!(
-            "image size {width}×{height} (each side 1 to 16384)"
-        )));
-    }
-    let prepared = prepare::prepare(scene, options)?;
-    let drawn = passes::draw_passes(&prepared, options, varyings, on_pass)?;
-    let stats = RenderStats::of(&prepared, &drawn);
-    Ok(Rendered {
-        image: drawn.image,
-        camera: prepared.camera,
-        stats,
-    })
+    PreparedScene::new(scene, options)?.render_varyings(varyings, on_pass)
 }
 
 #[cfg(test)]

@@ -5,7 +5,7 @@
 //!   takes the render options, and `--mirror` for the demo with a standing mirror).
 //! - `barytex render FILE [--scene N] [--camera N|auto] [--size WxH] [--shading unlit|phong]
 //!   [--filter …] [--aa …] [--background COLOUR] [--threads N] [-o OUT.png] [--print-camera]
-//!   [--stats] [--portal-depth N] [--allow-dir DIR]…`: a glTF/GLB (its URIs read only files under its folder and
+//!   [--stats] [--frames N] [--portal-depth N] [--allow-dir DIR]…`: a glTF/GLB (its URIs read only files under its folder and
 //!   each DIR). `--camera N` is the document's `cameras[N]`; `--list-cameras` lists them and
 //!   where the scene places them, and renders nothing.
 //! - `barytex examples`: the worked examples of Buss, *3D Computer Graphics* (2003), ch. IV,
@@ -98,6 +98,11 @@ struct RenderArgs {
     /// time rasterization apart from shading (one more draw with a constant shader).
     #[arg(long)]
     stats: bool,
+    /// Draw the prepared scene this many times (1 to 1000) and print the draw's median, minimum
+    /// and maximum: the first frame in a process touches fresh memory, later ones are warm, as
+    /// an application drawing frame after frame sees them. The PNG is the last frame's.
+    #[arg(long, default_value_t = 1, value_parser = render_cmd::parse_frames)]
+    frames: u32,
 }
 
 /// Options of `barytex render`.
@@ -150,6 +155,7 @@ impl RenderArgs {
             threads: None,
             print_camera: false,
             stats: false,
+            frames: 1,
             portal_depth: demo.portal_depth,
         }
     }
@@ -194,6 +200,7 @@ impl RenderArgs {
             print_camera: self.print_camera,
             list_cameras: self.list_cameras,
             stats: self.stats,
+            frames: self.frames,
         })
     }
 }

@@ -7,8 +7,8 @@ use std::time::Instant;
 
 use barytex_gltf::{LoadOptions, Projection, Scene, load_path};
 use barytex_render::{
-    AntiAliasing, CameraChoice, Filter, RenderOptions, RenderStats, Rendered, Shading,
-    render_with_progress,
+    AntiAliasing, CameraChoice, Filter, PreparedScene, RenderOptions, RenderStats, Rendered,
+    Shading,
 };
 use glam::{Vec3, Vec4};
 
@@ -35,6 +35,8 @@ pub(crate) struct Options {
     pub(crate) list_cameras: bool,
     /// Print the render statistics.
     pub(crate) stats: bool,
+    /// Draws of the prepared scene (`--frames`, at least 1).
+    pub(crate) frames: u32,
 }
 
 /// `WxH`, e.g. `1024x768`.
@@ -66,6 +68,48 @@ pub(crate) fn parse_threads(text: &str) -> Result<usize, String> {
         .ok()
         .filter(|&n| n <= MAX_THREADS)
         .ok_or_else(too_many)
+}
+
+/// The most frames `--frames` accepts.
+pub(crate) const MAX_FRAMES: u32 = 1000;
+
+/// `1` to [`MAX_FRAMES`].
+pub(crate) fn parse_frames(text: &str) -> Result<u32, String> {
+    text.trim()
+        .parse::<u32>()
+        .ok()
+        .filter(|n| (1..=MAX_FRAMES).contains(n))
+        .ok_or_else(|| format!("frames `{text}`: expected a whole number from 1 to {MAX_FRAMES}"))
+}
+
+/// `frames: …`, the draws of a prepared scene drawn `draws.len()` times (seconds each, in
+/// order): the first, and the median, minimum and maximum of the rest (warm frames), in
+/// milliseconds.
+fn frames_line(draws: &[f64]) -> String {
+    let ms = |seconds: f64| format!("{:.2} ms", seconds * 1e3);
+    let Some((first, warm)) = draws.split_first() else {
+        return "frames: none".to_owned();
+    };
+    if warm.is_empty() {
+        return format!("frames: 1, draw {}", ms(*first));
+    }
+    let mut sorted = warm.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let n = sorted.len();
+    let median = if n % 2 == 1 {
+        sorted[n / 2]
+    } else {
+        0.5 * (sorted[n / 2 - 1] + sorted[n / 2])
+    };
+    format!(
+        "frames: {}, draw (raster + shade) of the first {}; of the {n} after it median {}, \
+         min {}, max {}",
+        draws.len(),
+        ms(*first),
+        ms(median),
+        ms(sorted[0]),
+        ms(sorted[n - 1])
+    )
 }
 
 /// `auto` or a camera index.
@@ -460,10 +504,22 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
         measure_stages: options.stats,
         ..options.render
     };
-    let rendered = pool.install(|| {
-        render_with_progress(&scene, &render_options, &mut |done, planned| {
-            progress.passes(done, planned);
-        })
+    let (rendered, draws) = pool.install(|| {
+        let prepared = PreparedScene::new(&scene, &render_options)?;
+        let frames = options.frames.max(1);
+        // One progress bar over every frame's passes.
+        let draw = |frame: u32| {
+            prepared.render_with_progress(&mut |done, planned| {
+                progress.passes(frame * planned + done, frames * planned);
+            })
+        };
+        let mut rendered = draw(0)?;
+        let mut draws = vec![rendered.stats.draw_seconds];
+        for frame in 1..frames {
+            rendered = draw(frame)?;
+            draws.push(rendered.stats.draw_seconds);
+        }
+        Ok::<_, barytex_render::RenderError>((rendered, draws))
     })?;
     progress.stage("writing");
     let started = Instant::now();
@@ -484,6 +540,9 @@ pub(crate) fn run(options: &Options) -> Result<(), Box<dyn std::error::Error>> {
             save_seconds
         )
     );
+    if options.frames > 1 {
+        println!("{}", frames_line(&draws));
+    }
     if options.stats {
         print_stats(&rendered, &scene, options.render.portal_depth);
     }
@@ -508,6 +567,28 @@ fn save(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn frames_parse_from_one_to_the_maximum() {
+        assert_eq!(parse_frames("1"), Ok(1));
+        assert_eq!(parse_frames(" 1000 "), Ok(MAX_FRAMES));
+        for bad in ["0", "1001", "-1", "two", "", "4294967296"] {
+            let error = parse_frames(bad).expect_err(bad);
+            assert!(error.contains("from 1 to 1000"), "{error}");
+        }
+    }
+
+    #[test]
+    fn the_frames_line_sets_the_first_frame_apart() {
+        assert_eq!(frames_line(&[0.004]), "frames: 1, draw 4.00 ms");
+        let line = frames_line(&[0.009, 0.003, 0.001, 0.002, 0.005]);
+        assert_eq!(
+            line,
+            "frames: 5, draw (raster + shade) of the first 9.00 ms; of the 4 after it median \
+             2.50 ms, min 1.00 ms, max 5.00 ms"
+        );
+        assert!(frames_line(&[0.01, 0.002, 0.003, 0.001]).contains("median 2.00 ms"));
+    }
 
     #[test]
     fn portal_depths_parse_up_to_the_maximum() {

@@ -56,3 +56,40 @@ fn every_stage_is_timed() {
     );
     assert!(raster > 0.0 && shade >= 0.0, "{split}");
 }
+
+#[test]
+fn frames_draws_the_prepared_scene_again_and_again() {
+    let dir = temp_dir("frames");
+    std::fs::create_dir_all(&dir).unwrap();
+    let run = |frames: &str, name: &str| {
+        let out = dir.join(name);
+        let output = barytex()
+            .args(["demo", "--size", "48x27", "--frames", frames, "-o"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8(output.stdout).unwrap();
+        let stderr = String::from_utf8(output.stderr).unwrap();
+        (output.status.success(), stdout, stderr, out)
+    };
+    let (ok, once, _, single) = run("1", "one.png");
+    assert!(ok, "{once}");
+    assert!(!once.contains("frames:"), "{once}");
+    let (ok, stdout, _, last) = run("4", "four.png");
+    assert!(ok, "{stdout}");
+    let line = stdout
+        .lines()
+        .find(|l| l.starts_with("frames: 4, draw"))
+        .unwrap_or_else(|| panic!("no frames line in:\n{stdout}"));
+    assert!(line.contains("of the 3 after it median"), "{line}");
+    // The last of four draws is the image of a single one.
+    assert_eq!(
+        std::fs::read(&single).unwrap(),
+        std::fs::read(&last).unwrap()
+    );
+    for bad in ["0", "1001", "x"] {
+        let (ok, _, stderr, _) = run(bad, "bad.png");
+        assert!(!ok && stderr.contains("from 1 to 1000"), "{bad}: {stderr}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
