@@ -20,7 +20,7 @@ use barytex_interp::Interpolate;
 use barytex_raster::{Fragment, Shader};
 use barytex_uv::UvSample;
 use barytex_uv::mappings::TexCoordMapping;
-use glam::{Mat4, Vec2, Vec3, Vec4};
+use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
 
 use crate::material_shader::{MaterialShader, WorldPrimitive, coverage_alpha};
 use crate::textures::PreparedTexture;
@@ -98,6 +98,11 @@ pub(crate) struct UnlitShader<'a> {
     /// The base colour texture and its mapping, when the material has one on set 0 or 1 (a
     /// primitive has no other sets: the general path's mapping finds nothing there).
     base: Option<(&'a PreparedTexture, TexCoordMapping)>,
+    /// Whether that mapping's transform is the identity (no `KHR_texture_transform`, the common
+    /// case): its product is then the interpolated coordinate itself, but for the sign of a
+    /// zero, which no lookup reads (`−0·w − ½ = +0·w − ½`, and derivatives are squared), so
+    /// [`map`](Self::map) skips the three matrix products.
+    identity: bool,
 }
 
 impl<'a> UnlitShader<'a> {
@@ -117,6 +122,7 @@ impl<'a> UnlitShader<'a> {
             primitive: shader.primitive,
             base_color: m.base_color,
             alpha_mode: m.alpha_mode,
+            identity: base.is_some_and(|(_, mapping)| mapping.transform == Mat3::IDENTITY),
             base,
         })
     }
@@ -155,10 +161,14 @@ impl Shader for UnlitShader<'_> {
 
     #[inline(always)]
     fn fragment(&self, f: &Fragment<'_, UnlitVarying>) -> Option<Vec4> {
-        let texel = self.base.and_then(|(texture, mapping)| {
-            let mapped = mapping.transform_sample(&uv_sample(f))?;
-            Some(texture.sample_base(&mapped))
-        });
+        // No closure borrows the fragment: one that did stayed out of line in the paired
+        // loop's fallback, and the fragments had to live in memory (10 stores a fragment).
+        let texel = match self.base {
+            Some((texture, mapping)) => self
+                .map(mapping, uv_sample(f))
+                .map(|mapped| texture.sample_base(&mapped)),
+            None => None,
+        };
         self.finish(f, texel)
     }
 
@@ -179,8 +189,8 @@ impl Shader for UnlitShader<'_> {
             return [self.finish(a, None), self.finish(b, None)];
         };
         let (Some(ma), Some(mb)) = (
-            mapping.transform_sample(&uv_sample(a)),
-            mapping.transform_sample(&uv_sample(b)),
+            self.map(mapping, uv_sample(a)),
+            self.map(mapping, uv_sample(b)),
         ) else {
             return [self.fragment(a), self.fragment(b)];
         };
@@ -190,6 +200,19 @@ impl Shader for UnlitShader<'_> {
 }
 
 impl UnlitShader<'_> {
+    /// `mapping.transform_sample(&sample)`: `None` where it is not finite; with an identity
+    /// transform, the sample itself (see [`identity`](Self::identity)).
+    #[inline(always)]
+    fn map(&self, mapping: TexCoordMapping, sample: UvSample) -> Option<UvSample> {
+        if self.identity {
+            let finite =
+                sample.uv.is_finite() && sample.duvdx.is_finite() && sample.duvdy.is_finite();
+            finite.then_some(sample)
+        } else {
+            mapping.transform_sample(&sample)
+        }
+    }
+
     /// The fragment's colour from its base texture's texel (`None`: no texture, or a mapping
     /// undefined at the pixel): base colour factor × vertex colour × texel, and the alpha mode.
     #[inline(always)]
@@ -261,5 +284,54 @@ mod tests {
         );
         assert_eq!(lerped.color, expected.to_array());
         assert_eq!(Interpolate::lerp(plain, plain, 0.3).color, [1.0; 4]);
+    }
+
+    #[test]
+    fn an_identity_transform_changes_only_the_sign_of_zeros_which_no_lookup_reads() {
+        use barytex_texture::{
+            MipChain, MipOptions, Sampler, SamplerDescriptor, Srgba8, Texture2d, TextureSampler,
+        };
+        let identity = TexCoordMapping::new(0);
+        assert_eq!(identity.transform, Mat3::IDENTITY);
+        let base = Texture2d::from_fn(32, 32, |x, y| {
+            Srgba8([(x * 8) as u8, (y * 8) as u8, (x ^ y) as u8 * 8, 255])
+        })
+        .expect("a 32² texture");
+        let chain = MipChain::generate(base, &MipOptions::default()).expect("mips");
+        let sampler = TextureSampler::new(chain, SamplerDescriptor::trilinear());
+        let values = [0.0, -0.0, 0.25, -0.75, 1e-30, -3.5, f32::INFINITY, f32::NAN];
+        let zero_signs = |v: Vec2| [v, Vec2::new(-v.x, v.y), Vec2::new(v.x, -v.y), -v];
+        for (k, &u) in values.iter().enumerate() {
+            let v = values[(k * 3 + 1) % values.len()];
+            let d = values[(k * 5 + 2) % values.len()] * 0.01;
+            let sample = UvSample {
+                uv: Vec2::new(u, v),
+                duvdx: Vec2::new(d, 0.0),
+                duvdy: Vec2::new(-0.0, 0.02),
+            };
+            let through = identity.transform_sample(&sample);
+            let finite =
+                sample.uv.is_finite() && sample.duvdx.is_finite() && sample.duvdy.is_finite();
+            // The same `None`s, and equal values (`==` does not tell −0 from +0).
+            assert_eq!(through, finite.then_some(sample), "{sample:?}");
+            let Some(through) = through else { continue };
+            // Flipping the sign of any zero changes no texel.
+            let expected = sampler.sample(through.uv, through.duvdx, through.duvdy);
+            for uv in zero_signs(sample.uv)
+                .into_iter()
+                .filter(|w| *w == sample.uv)
+            {
+                for dx in zero_signs(sample.duvdx)
+                    .into_iter()
+                    .filter(|w| *w == sample.duvdx)
+                {
+                    let got = sampler.sample(uv, dx, sample.duvdy);
+                    assert_eq!(
+                        got.to_array().map(f32::to_bits),
+                        expected.to_array().map(f32::to_bits)
+                    );
+                }
+            }
+        }
     }
 }
