@@ -168,6 +168,14 @@ def parse_matrices(text):
     return out["view"], out["projection"]
 
 
+def run_checked(cmd):
+    """The command's standard output; its last line of error output as a RuntimeError if it fails."""
+    run = subprocess.run(cmd, capture_output=True, text=True)
+    if run.returncode != 0:
+        raise RuntimeError((run.stderr.strip() or run.stdout.strip() or "failed").splitlines()[-1])
+    return run.stdout
+
+
 def run_barytex(binary, scene, size, threads, runs, out_png, cold=False):
     """Median frame (ms) of `runs` warm frames drawn by one process after its first (`--frames`),
     or with `cold`, of `runs` processes after one warm-up, each drawing one frame (the first frame
@@ -175,10 +183,7 @@ def run_barytex(binary, scene, size, threads, runs, out_png, cold=False):
     camera."""
     if runs == 0 or not cold:
         cmd = barytex_command(binary, scene, size, threads, out_png, frames=runs + 1)
-        run = subprocess.run(cmd, capture_output=True, text=True)
-        if run.returncode != 0:
-            raise RuntimeError((run.stderr.strip() or run.stdout.strip() or "failed").splitlines()[-1])
-        text = run.stdout
+        text = run_checked(cmd)
         view, projection = parse_matrices(text)
         if runs == 0:
             return {"view": view.tolist(), "projection": projection.tolist()}
@@ -190,10 +195,7 @@ def run_barytex(binary, scene, size, threads, runs, out_png, cold=False):
     text = ""
     for i in range(runs + 1):
         cmd = barytex_command(binary, scene, size, threads, out_png)
-        run = subprocess.run(cmd, capture_output=True, text=True)
-        if run.returncode != 0:
-            raise RuntimeError((run.stderr.strip() or run.stdout.strip() or "failed").splitlines()[-1])
-        text = run.stdout
+        text = run_checked(cmd)
         stages = parse_stages(text)
         if i > 0:  # the first run warms the file cache and the binary
             samples.append(stages)
