@@ -139,7 +139,7 @@ where
 /// the mask (if `MASKED`), the depth test `passes(fragment, stored)`, the fragment stage,
 /// replace or "over" blending, `store(fragment, stored)`.
 #[allow(clippy::too_many_arguments)]
-#[inline]
+#[inline(always)]
 pub(crate) fn shade_centres_paired<S, C, const OVER: bool, const MASKED: bool>(
     piece: &Piece,
     context: &PieceContext<S::Varying>,
@@ -187,20 +187,24 @@ pub(crate) fn shade_centres_paired<S, C, const OVER: bool, const MASKED: bool>(
     };
     if !narrow {
         let (step, area2) = (piece.edge.x_step(), piece.edge.area2());
-        piece.edge.for_each_covered_span(rect, |y, (xs, xe), e| {
-            let (start, len) = (index(xs, y), (xe - xs) as usize);
-            // Edge j is opposite input vertex j: its value is that vertex's weight.
-            for_each_run_pixel(
-                e,
-                step,
-                area2,
-                inv_area,
-                depths,
-                len,
-                #[inline(always)]
-                |k, lambda, z| pairs.centre(start + k, (xs + k as i64, y), lambda, z),
-            );
-        });
+        piece.edge.for_each_covered_span(
+            rect,
+            #[inline(always)]
+            |y, (xs, xe), e| {
+                let (start, len) = (index(xs, y), (xe - xs) as usize);
+                // Edge j is opposite input vertex j: its value is that vertex's weight.
+                for_each_run_pixel(
+                    e,
+                    step,
+                    area2,
+                    inv_area,
+                    depths,
+                    len,
+                    #[inline(always)]
+                    |k, lambda, z| pairs.centre(start + k, (xs + k as i64, y), lambda, z),
+                );
+            },
+        );
     }
     pairs.flush();
     stats.fragments_shaded += pairs.visited - pairs.skipped - pairs.failed;

@@ -204,6 +204,24 @@ fn shade_centres<S: Shader, C: ColorFormat, const OVER: bool, const MASKED: bool
         && let Ok(depth) = <&mut [f32; TILE_PIXELS]>::try_from(&mut *tile.depth)
     {
         let target = (tile.rect, tile.origin, tile.mask);
+        #[cfg(target_arch = "x86_64")]
+        if let Some(simd) = pulp::x86::V3::try_new() {
+            return simd.vectorize(
+                #[inline(always)]
+                || {
+                    shade_centres_paired::<S, C, OVER, MASKED>(
+                        piece,
+                        context,
+                        shader,
+                        target,
+                        (color, depth),
+                        stats,
+                        passes,
+                        store,
+                    )
+                },
+            );
+        }
         return shade_centres_paired::<S, C, OVER, MASKED>(
             piece,
             context,
