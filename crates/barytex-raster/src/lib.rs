@@ -41,6 +41,7 @@
 mod adaptive;
 mod assemble;
 mod clip;
+mod cpu_features;
 mod draw;
 mod edge;
 mod error;
@@ -63,6 +64,7 @@ mod target;
 mod tile;
 
 pub use adaptive::{AdaptiveOptions, AdaptiveStats, render_adaptive};
+pub use cpu_features::{allow_avx2, avx2_in_use};
 pub use draw::{DrawStats, draw, draw_cleared};
 pub use edge::{MAX_COORDINATE, SUBPIXEL_BITS};
 pub use error::{RasterError, TargetLimits};

@@ -6,6 +6,10 @@
 //! The results are those of the one-at-a-time loop in `tile.rs`: the two centres of a pair are
 //! different pixels of one piece, so neither's depth test reads what the other writes, and
 //! each is written (colour, then depth) exactly as there.
+//!
+//! On x86-64 the loop also runs as an AVX2 + FMA build (`cpu_features`): every closure below
+//! is `#[inline(always)]`, since one left out of line is compiled for the baseline alone (the
+//! span closure's was: the whole pixel loop stayed SSE2).
 
 use barytex_interp::Interpolate;
 use glam::{UVec2, Vec4};

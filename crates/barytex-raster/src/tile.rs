@@ -204,8 +204,10 @@ fn shade_centres<S: Shader, C: ColorFormat, const OVER: bool, const MASKED: bool
         && let Ok(depth) = <&mut [f32; TILE_PIXELS]>::try_from(&mut *tile.depth)
     {
         let target = (tile.rect, tile.origin, tile.mask);
+        // The AVX2 + FMA build where allowed and present (`cpu_features`): everything the
+        // loop calls is inlined into it, so compiled for those features; the same results.
         #[cfg(target_arch = "x86_64")]
-        if let Some(simd) = pulp::x86::V3::try_new() {
+        if let Some(simd) = crate::cpu_features::v3() {
             return simd.vectorize(
                 #[inline(always)]
                 || {

@@ -1,6 +1,7 @@
 //! Shaders that take their fragments in pairs (`Shader::PAIRS`) draw exactly what they draw one
 //! fragment at a time: the same image, depth and statistics, under every single-sample
-//! depth/blend/mask combination, on small and large triangles, on 1 and 2 threads.
+//! depth/blend/mask combination, on small and large triangles, on 1 and 2 threads, in the
+//! AVX2 + FMA build of the paired loop (where the processor has it) and in the baseline build.
 
 use barytex_raster::{
     Blend, CullMode, DepthCompare, DrawStats, Fragment, Framebuffer, PipelineState, Rgba8Unorm,
@@ -123,13 +124,20 @@ fn paired_fragments_draw_what_single_fragments_draw() {
             for masked in [false, true] {
                 for threads in [1, 2] {
                     let single = render::<false>(&vertices, &state, masked, threads);
+                    // Paired in the AVX2 build where the processor has it, then in the
+                    // baseline build (the setting is the process's: this binary has no other
+                    // test that could draw meanwhile).
                     let paired = render::<true>(&vertices, &state, masked, threads);
+                    barytex_raster::allow_avx2(false);
+                    let baseline = render::<true>(&vertices, &state, masked, threads);
+                    barytex_raster::allow_avx2(true);
                     assert!(single.2.fragments_shaded > 0 && single.2.fragments_discarded > 0);
-                    assert_eq!(
-                        single, paired,
+                    let what = format!(
                         "{size} {depth_compare:?} {blend:?} write {depth_write} mask {masked} \
                          threads {threads}"
                     );
+                    assert_eq!(single, paired, "{what}");
+                    assert_eq!(single, baseline, "{what}, baseline build");
                 }
             }
         }
