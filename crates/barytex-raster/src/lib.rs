@@ -12,12 +12,13 @@
 //! | masks | [`mask_samples`] (the samples a draw would write, as a one-bit stencil [`SampleMask`]) and [`Framebuffer::copy_samples`] (composite another target's samples through it) |
 //! | anti-aliasing | multisampled targets ([`Framebuffer::multisampled`] with a [`SamplePattern`]: regular, per-pixel jitter, the GPUs' standard positions) shaded per pixel (MSAA) or per sample; [`render_supersampled`] by accumulating passes; [`render_adaptive`] adds samples only where they disagree (up to 40) |
 //! | the scanline backend (Schaefer's lecture slides) | [`scanline::scanline_fill`]: Edge Table and Active Edge List, exact with rational arithmetic |
+//! | instruction sets | [`allow_avx2`], [`avx2_in_use`]: the paired fragment loop's AVX2 + FMA build, chosen at run time, the same bits as the baseline's |
 //!
 //! Conventions: clip space is Vulkan's/wgpu's (`−w ≤ x, y ≤ w`, `0 ≤ z ≤ w`, y up); screen
 //! space is y down with pixel centres at `(x + ½, y + ½)`; counter-clockwise (in clip space) is
 //! front by default.
 //!
-//! Dependencies: barytex-interp, glam and rayon. The optional `texture` feature adds
+//! Dependencies: barytex-interp, glam and rayon; on x86-64 safe_arch and pulp. The optional `texture` feature adds
 //! barytex-texture (without its image decoders) for `Framebuffer::to_rgba32f` and
 //! `Framebuffer::to_srgba8`, which return its `Texture2d`; [`Framebuffer::to_linear_rgba`] reads
 //! the resolved pixels without it.
