@@ -1,8 +1,10 @@
 //! Which instruction-set build of the fragment loop a draw runs.
 //!
 //! The loop that shades a piece's pixels in pairs (shaders with [`Shader::PAIRS`]) is compiled
-//! twice: for the x86-64 baseline (SSE2) and for AVX2 + FMA (x86-64-v3, whose three-operand
-//! VEX forms, `roundss` and the like need fewer instructions), chosen per piece at run time
+//! twice for the common state (replace blending, depth written, no mask; the other states have
+//! the baseline build only, which keeps compile time down): for the x86-64 baseline (SSE2) and
+//! for AVX2 + FMA (x86-64-v3, whose three-operand VEX forms, `roundss` and the like need fewer
+//! instructions), chosen per piece at run time
 //! through `pulp`'s `V3` token (the workspace forbids `unsafe`, which calling a
 //! `#[target_feature]` function directly needs). Rust never contracts `a * b + c` into a fused
 //! multiply-add on its own, so both builds compute the same IEEE operations in the same order:

@@ -206,8 +206,13 @@ fn shade_centres<S: Shader, C: ColorFormat, const OVER: bool, const MASKED: bool
         let target = (tile.rect, tile.origin, tile.mask);
         // The AVX2 + FMA build where allowed and present (`cpu_features`): everything the
         // loop calls is inlined into it, so compiled for those features; the same results.
+        // Only for the common state (replace, depth written, no mask): each build of the loop
+        // is compile time, for every shader and format (CI took 48 min with all four).
         #[cfg(target_arch = "x86_64")]
-        if let Some(simd) = crate::cpu_features::v3() {
+        if !OVER
+            && !MASKED
+            && let Some(simd) = crate::cpu_features::v3()
+        {
             return simd.vectorize(
                 #[inline(always)]
                 || {

@@ -1,7 +1,8 @@
 //! Shaders that take their fragments in pairs (`Shader::PAIRS`) draw exactly what they draw one
 //! fragment at a time: the same image, depth and statistics, under every single-sample
 //! depth/blend/mask combination, on small and large triangles, on 1 and 2 threads, in the
-//! AVX2 + FMA build of the paired loop (where the processor has it) and in the baseline build.
+//! AVX2 + FMA build of the paired loop (where the processor has it; replace blending with the
+//! depth written and no mask) and in the baseline build.
 
 use barytex_raster::{
     Blend, CullMode, DepthCompare, DrawStats, Fragment, Framebuffer, PipelineState, Rgba8Unorm,
