@@ -204,6 +204,22 @@ fn shade_centres<S: Shader, C: ColorFormat, const OVER: bool, const MASKED: bool
         && let Ok(depth) = <&mut [f32; TILE_PIXELS]>::try_from(&mut *tile.depth)
     {
         let target = (tile.rect, tile.origin, tile.mask);
+        // One call, spelled once, for both builds below (a closure in a `let` cannot carry
+        // `#[inline(always)]` on stable Rust, and the AVX2 build needs it inlined).
+        macro_rules! paired {
+            () => {
+                shade_centres_paired::<S, C, OVER, MASKED>(
+                    piece,
+                    context,
+                    shader,
+                    target,
+                    (color, depth),
+                    stats,
+                    passes,
+                    store,
+                )
+            };
+        }
         // The AVX2 + FMA build where allowed and present (`cpu_features`): everything the
         // loop calls is inlined into it, so compiled for those features; the same results.
         // Only for the common state (replace, depth written, no mask): each build of the loop
@@ -215,30 +231,10 @@ fn shade_centres<S: Shader, C: ColorFormat, const OVER: bool, const MASKED: bool
         {
             return simd.vectorize(
                 #[inline(always)]
-                || {
-                    shade_centres_paired::<S, C, OVER, MASKED>(
-                        piece,
-                        context,
-                        shader,
-                        target,
-                        (color, depth),
-                        stats,
-                        passes,
-                        store,
-                    )
-                },
+                || paired!(),
             );
         }
-        return shade_centres_paired::<S, C, OVER, MASKED>(
-            piece,
-            context,
-            shader,
-            target,
-            (color, depth),
-            stats,
-            passes,
-            store,
-        );
+        return paired!();
     }
     let depths = piece.depth;
     let inv_area = piece.edge.inv_area();

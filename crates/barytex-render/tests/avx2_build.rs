@@ -7,19 +7,16 @@
 //! The setting belongs to the process: this file is a test binary of its own, with one test.
 
 use barytex_render::demo::{demo_options, demo_scene};
-use barytex_render::{AntiAliasing, Filter, RenderOptions, Shading, render};
+use barytex_render::{AntiAliasing, Filter, RenderOptions, Shading};
 
+mod common;
+
+/// Every bit of the demo drawn with `options`, the AVX2 build allowed or not.
 fn bits(options: &RenderOptions, avx2: bool) -> Vec<u32> {
     barytex_raster::allow_avx2(avx2);
-    let out = render(&demo_scene(), options).expect("renders");
+    let bits = common::render_bits(&demo_scene(), options);
     barytex_raster::allow_avx2(true);
-    out.image
-        .to_rgba32f()
-        .expect("small")
-        .texels()
-        .iter()
-        .flat_map(|t| t.0.map(f32::to_bits))
-        .collect()
+    bits
 }
 
 #[test]

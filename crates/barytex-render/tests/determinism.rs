@@ -4,7 +4,9 @@
 
 use barytex_gltf::Scene;
 use barytex_render::demo::{demo_options, demo_scene};
-use barytex_render::{AntiAliasing, Filter, RenderOptions, render};
+use barytex_render::{AntiAliasing, Filter, RenderOptions};
+
+mod common;
 
 const WIDTH: u32 = 96;
 const HEIGHT: u32 = 64;
@@ -25,22 +27,13 @@ const ANTI_ALIASING: [AntiAliasing; 5] = [
     AntiAliasing::Adaptive(16),
 ];
 
-/// Every bit of the resolved linear colour.
+/// Every bit of the resolved linear colour, drawn on `threads` threads.
 fn render_bits(scene: &Scene, options: &RenderOptions, threads: usize) -> Vec<u32> {
     rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
         .expect("pool")
-        .install(|| {
-            let out = render(scene, options).expect("renders");
-            out.image
-                .to_rgba32f()
-                .expect("small")
-                .texels()
-                .iter()
-                .flat_map(|t| t.0.map(f32::to_bits))
-                .collect()
-        })
+        .install(|| common::render_bits(scene, options))
 }
 
 #[track_caller]
