@@ -72,14 +72,35 @@ impl Piece {
         }
     }
 
-    /// Asks the cache for the lines of the piece that rasterization reads first.
+    /// Asks the cache for the piece's lines: its setup, depths, vertex indices (read by
+    /// [`prefetch_varyings`](Self::prefetch_varyings)) and what [`context`](Self::context)
+    /// copies. Each field not asked for was a miss per piece and tile on small triangles.
     #[inline(always)]
     pub(crate) fn prefetch(&self) {
         #[cfg(target_arch = "x86_64")]
         {
             self.edge.prefetch();
             safe_arch::prefetch_t0(&self.depth);
+            safe_arch::prefetch_t0(&self.vertices);
+            safe_arch::prefetch_t0(&self.grads);
+            safe_arch::prefetch_t0(&self.inv_w);
+            safe_arch::prefetch_t0(&self.bary);
         }
+    }
+
+    /// Asks the cache for the input triangle's varyings in `shaded`, which
+    /// [`context`](Self::context) gathers: the pieces of a tile name vertices all over the
+    /// vertex stage's outputs, and each gather waited on a miss.
+    #[inline(always)]
+    pub(crate) fn prefetch_varyings<V>(&self, shaded: &[(Vec4, V)]) {
+        #[cfg(target_arch = "x86_64")]
+        for i in self.vertices {
+            if let Some(vertex) = shaded.get(i as usize) {
+                safe_arch::prefetch_t0(&vertex.1);
+            }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = shaded;
     }
 }
 

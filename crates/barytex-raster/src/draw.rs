@@ -402,6 +402,10 @@ fn draw_bins<S: Shader, C: ColorFormat>(
             if let Some(&ahead) = bin.get(k + PREFETCH_AHEAD) {
                 pieces.get(ahead).prefetch();
             }
+            // Half as far ahead, the varyings of a piece whose indices that asked for.
+            if let Some(&ahead) = bin.get(k + PREFETCH_AHEAD / 2) {
+                pieces.get(ahead).prefetch_varyings(shaded);
+            }
             shade_piece(
                 pieces.get(id),
                 shaded,

@@ -433,7 +433,9 @@ impl EdgeSetup {
     #[inline(always)]
     pub(crate) fn prefetch(&self) {
         safe_arch::prefetch_t0(&self.a);
+        safe_arch::prefetch_t0(&self.b);
         safe_arch::prefetch_t0(&self.c);
+        safe_arch::prefetch_t0(&self.inv_area);
         safe_arch::prefetch_t0(&self.bias);
         safe_arch::prefetch_t0(&self.bbox);
         safe_arch::prefetch_t0(&self.ys);
