@@ -1,11 +1,12 @@
-//! A piece's covered pixel centres shaded two at a time, for shaders that interleave two
-//! fragments ([`Shader::PAIRS`]): each centre that passes the depth test waits for the next
-//! one, and the two go to [`Shader::fragment_pair`] together; a piece's odd last one goes to
-//! [`Shader::fragment`] alone.
+//! A piece's covered pixel centres shaded two or four at a time, for shaders that interleave
+//! two fragments ([`Shader::PAIRS`]) or work on four at once ([`Shader::QUADS`]): each centre
+//! that passes the depth test waits for the next ones, and the two (four) go to
+//! [`Shader::fragment_pair`] ([`Shader::fragment_quad`]) together; a piece's last ones go to
+//! [`Shader::fragment_pair`] and [`Shader::fragment`].
 //!
-//! The results are those of the one-at-a-time loop in `tile.rs`: the two centres of a pair are
-//! different pixels of one piece, so neither's depth test reads what the other writes, and
-//! each is written (colour, then depth) exactly as there.
+//! The results are those of the one-at-a-time loop in `tile.rs`: the centres of a batch are
+//! different pixels of one piece, so none's depth test reads what another writes, and each is
+//! written (colour, then depth) exactly as there.
 //!
 //! On x86-64 the loop also runs as an AVX2 + FMA build (`cpu_features`): every closure below
 //! is `#[inline(always)]`, since one left out of line is compiled for the baseline alone (the
@@ -24,7 +25,7 @@ use crate::tile::TILE_PIXELS;
 use crate::{Fragment, Shader};
 
 /// A covered centre that passed the depth test.
-#[derive(Clone, Copy)]
+#[derive(Clone, Copy, Default)]
 struct Passed {
     /// Its index in the tile's buffers.
     index: usize,
@@ -44,7 +45,9 @@ struct Pairs<'a, S: Shader, C: ColorFormat, P, St, const OVER: bool> {
     store: St,
     /// The tile's mask (`MASKED` draws only).
     mask: Option<&'a [bool]>,
-    waiting: Option<Passed>,
+    /// The centres waiting for a batch: the first `queued` of `waiting`.
+    waiting: [Passed; 3],
+    queued: usize,
     visited: u64,
     skipped: u64,
     failed: u64,
@@ -84,22 +87,52 @@ where
             lambda,
             z,
         };
-        let Some(first) = self.waiting.take() else {
-            self.waiting = Some(now);
+        let batch = if S::QUADS { 4 } else { 2 };
+        if self.queued + 1 < batch {
+            self.waiting[self.queued] = now;
+            self.queued += 1;
             return;
-        };
-        let (a, b) = (self.fragment(&first), self.fragment(&now));
-        let [ca, cb] = self.shader.fragment_pair(&a, &b);
-        self.write(&first, ca);
-        self.write(&now, cb);
+        }
+        self.queued = 0;
+        let w = self.waiting;
+        if S::QUADS {
+            let f = [
+                self.fragment(&w[0]),
+                self.fragment(&w[1]),
+                self.fragment(&w[2]),
+                self.fragment(&now),
+            ];
+            let c = self.shader.fragment_quad(&f);
+            for (p, c) in [w[0], w[1], w[2], now].iter().zip(c) {
+                self.write(p, c);
+            }
+        } else {
+            self.pair(&w[0], &now);
+        }
     }
 
-    /// The waiting centre, alone.
+    /// Two centres through [`Shader::fragment_pair`].
+    #[inline(always)]
+    fn pair(&mut self, first: &Passed, second: &Passed) {
+        let (a, b) = (self.fragment(first), self.fragment(second));
+        let [ca, cb] = self.shader.fragment_pair(&a, &b);
+        self.write(first, ca);
+        self.write(second, cb);
+    }
+
+    /// The waiting centres: two at a time, an odd last one alone.
     #[inline(always)]
     fn flush(&mut self) {
-        if let Some(last) = self.waiting.take() {
-            let c = self.shader.fragment(&self.fragment(&last));
-            self.write(&last, c);
+        let (w, n) = (self.waiting, self.queued);
+        self.queued = 0;
+        let mut k = 0;
+        if n >= 2 {
+            self.pair(&w[0], &w[1]);
+            k = 2;
+        }
+        if k < n {
+            let c = self.shader.fragment(&self.fragment(&w[k]));
+            self.write(&w[k], c);
         }
     }
 
@@ -168,7 +201,8 @@ pub(crate) fn shade_centres_paired<S, C, const OVER: bool, const MASKED: bool>(
         passes,
         store,
         mask: mask.filter(|_| MASKED),
-        waiting: None,
+        waiting: [Passed::default(); 3],
+        queued: 0,
         visited: 0,
         skipped: 0,
         failed: 0,

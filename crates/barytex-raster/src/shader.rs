@@ -78,6 +78,44 @@ pub trait Shader: Sync {
     ) -> [Option<Vec4>; 2] {
         [self.fragment(a), self.fragment(b)]
     }
+
+    /// Whether single-sampled draws hand this shader's fragments over four at a time, through
+    /// [`fragment_quad`](Self::fragment_quad) (a piece's last one to three through
+    /// [`fragment_pair`](Self::fragment_pair) and [`fragment`](Self::fragment)). Worth it for
+    /// a shader whose per-fragment arithmetic can run over four fragments per instruction
+    /// (arrays of four that the compiler vectorizes, as a texture lookup's coordinates). The
+    /// image is the same either way.
+    const QUADS: bool = false;
+
+    /// The colours of four fragments of one triangle piece at different pixels:
+    /// `f.map(|f| self.fragment(f))`, which an override must return too.
+    ///
+    /// ```
+    /// use barytex_raster::{Fragment, Shader};
+    /// use glam::{Vec3, Vec4};
+    ///
+    /// struct Grey;
+    /// impl Shader for Grey {
+    ///     type Vertex = Vec3;
+    ///     type Varying = f32;
+    ///     fn vertex(&self, v: &Vec3) -> (Vec4, f32) { (v.extend(1.0), v.x) }
+    ///     fn fragment(&self, f: &Fragment<'_, f32>) -> Option<Vec4> {
+    ///         Some(Vec4::new(f.varying, f.varying, f.varying, 1.0))
+    ///     }
+    ///     const QUADS: bool = true;
+    ///     fn fragment_quad(&self, f: &[Fragment<'_, f32>; 4]) -> [Option<Vec4>; 4] {
+    ///         // The four varyings as one array (a real shader would do longer work on it).
+    ///         let v = f.map(|f| f.varying);
+    ///         v.map(|x| Some(Vec4::new(x, x, x, 1.0)))
+    ///     }
+    /// }
+    /// ```
+    #[inline(always)]
+    fn fragment_quad(&self, f: &[Fragment<'_, Self::Varying>; 4]) -> [Option<Vec4>; 4] {
+        let [a, b] = self.fragment_pair(&f[0], &f[1]);
+        let [c, d] = self.fragment_pair(&f[2], &f[3]);
+        [a, b, c, d]
+    }
 }
 
 /// What the fragment stage sees at one pixel. The varying is interpolated eagerly; its screen

@@ -1,8 +1,8 @@
-//! Shaders that take their fragments in pairs (`Shader::PAIRS`) draw exactly what they draw one
-//! fragment at a time: the same image, depth and statistics, under every single-sample
-//! depth/blend/mask combination, on small and large triangles, on 1 and 2 threads, in the
-//! AVX2 + FMA build of the paired loop (where the processor has it; replace blending with the
-//! depth written and no mask) and in the baseline build.
+//! Shaders that take their fragments in pairs (`Shader::PAIRS`) or fours (`Shader::QUADS`) draw
+//! exactly what they draw one fragment at a time: the same image, depth and statistics, under
+//! every single-sample depth/blend/mask combination, on small and large triangles, on 1 and 2
+//! threads, in the AVX2 + FMA build of the batching loop (where the processor has it; replace
+//! blending with the depth written and no mask) and in the baseline build.
 
 use barytex_raster::{
     Blend, CullMode, DepthCompare, DrawStats, Fragment, Framebuffer, PipelineState, Rgba8Unorm,
@@ -11,11 +11,12 @@ use barytex_raster::{
 use glam::Vec4;
 
 /// A colour varying, discarding where its red exceeds 0.8 and reading its derivatives;
-/// `PAIRED` decides whether the rasterizer pairs its fragments. The pair override shades the
-/// second fragment first: the rasterizer must not depend on the order within a pair.
-struct Colours<const PAIRED: bool>;
+/// `BATCH` (1, 2 or 4) decides how many fragments the rasterizer hands over at once. The
+/// overrides shade the last fragment first: the rasterizer must not depend on the order
+/// within a batch.
+struct Colours<const BATCH: usize>;
 
-impl<const PAIRED: bool> Shader for Colours<PAIRED> {
+impl<const BATCH: usize> Shader for Colours<BATCH> {
     type Vertex = (Vec4, Vec4);
     type Varying = Vec4;
     fn vertex(&self, v: &(Vec4, Vec4)) -> (Vec4, Vec4) {
@@ -28,10 +29,18 @@ impl<const PAIRED: bool> Shader for Colours<PAIRED> {
         let (dx, dy) = f.derivatives();
         Some((f.varying + (dx + dy) * 0.5).with_w(0.6))
     }
-    const PAIRS: bool = PAIRED;
+    const PAIRS: bool = BATCH == 2;
     fn fragment_pair(&self, a: &Fragment<'_, Vec4>, b: &Fragment<'_, Vec4>) -> [Option<Vec4>; 2] {
         let second = self.fragment(b);
         [self.fragment(a), second]
+    }
+    const QUADS: bool = BATCH == 4;
+    fn fragment_quad(&self, f: &[Fragment<'_, Vec4>; 4]) -> [Option<Vec4>; 4] {
+        let mut c = [None; 4];
+        for k in (0..4).rev() {
+            c[k] = self.fragment(&f[k]);
+        }
+        c
     }
 }
 
@@ -63,7 +72,7 @@ fn triangles(count: usize, size: f32, seed: u64) -> Vec<(Vec4, Vec4)> {
         .collect()
 }
 
-fn render<const PAIRED: bool>(
+fn render<const BATCH: usize>(
     vertices: &[(Vec4, Vec4)],
     state: &PipelineState,
     masked: bool,
@@ -89,7 +98,7 @@ fn render<const PAIRED: bool>(
                 .expect("small");
         }
         let indices: Vec<u32> = (0..vertices.len() as u32).collect();
-        let stats = draw(&mut fb, &Colours::<PAIRED>, state, vertices, &indices);
+        let stats = draw(&mut fb, &Colours::<BATCH>, state, vertices, &indices);
         let pixels = (0..h)
             .flat_map(|y| (0..w).map(move |x| (x, y)))
             .map(|(x, y)| fb.stored(x, y).expect("inside"))
@@ -103,7 +112,7 @@ fn render<const PAIRED: bool>(
 }
 
 #[test]
-fn paired_fragments_draw_what_single_fragments_draw() {
+fn paired_and_quad_fragments_draw_what_single_fragments_draw() {
     let states = [
         (Some(DepthCompare::Less), Blend::Replace, true),
         (Some(DepthCompare::LessEqual), Blend::Replace, true),
@@ -124,13 +133,15 @@ fn paired_fragments_draw_what_single_fragments_draw() {
             };
             for masked in [false, true] {
                 for threads in [1, 2] {
-                    let single = render::<false>(&vertices, &state, masked, threads);
-                    // Paired in the AVX2 build where the processor has it, then in the
+                    let single = render::<1>(&vertices, &state, masked, threads);
+                    // Batched in the AVX2 build where the processor has it, then in the
                     // baseline build (the setting is the process's: this binary has no other
                     // test that could draw meanwhile).
-                    let paired = render::<true>(&vertices, &state, masked, threads);
+                    let paired = render::<2>(&vertices, &state, masked, threads);
+                    let quads = render::<4>(&vertices, &state, masked, threads);
                     barytex_raster::allow_avx2(false);
-                    let baseline = render::<true>(&vertices, &state, masked, threads);
+                    let baseline = render::<2>(&vertices, &state, masked, threads);
+                    let quads_baseline = render::<4>(&vertices, &state, masked, threads);
                     barytex_raster::allow_avx2(true);
                     assert!(single.2.fragments_shaded > 0 && single.2.fragments_discarded > 0);
                     let what = format!(
@@ -139,6 +150,8 @@ fn paired_fragments_draw_what_single_fragments_draw() {
                     );
                     assert_eq!(single, paired, "{what}");
                     assert_eq!(single, baseline, "{what}, baseline build");
+                    assert_eq!(single, quads, "{what}, quads");
+                    assert_eq!(single, quads_baseline, "{what}, quads, baseline build");
                 }
             }
         }

@@ -66,6 +66,18 @@ impl PreparedTexture {
             other => [other.sample_base(a), other.sample_base(b)],
         }
     }
+
+    /// [`sample_base`](Self::sample_base) at four points, the lookups' coordinate arithmetic
+    /// lane by lane for the sRGB format
+    /// ([`TextureSampler::sample_quad`](barytex_texture::TextureSampler::sample_quad)); the
+    /// same values.
+    #[inline(always)]
+    pub(crate) fn sample_base_quad(&self, q: [barytex_uv::UvSample; 4]) -> [Vec4; 4] {
+        match self {
+            Self::Srgba8(s) => s.sample_quad(q.map(|l| [l.uv, l.duvdx, l.duvdy])),
+            other => q.map(|l| other.sample_base(&l)),
+        }
+    }
 }
 
 impl barytex_texture::Sampler for PreparedTexture {

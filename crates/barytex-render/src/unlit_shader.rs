@@ -196,6 +196,24 @@ impl Shader for UnlitShader<'_> {
         let [ta, tb] = texture.sample_base_pair(&ma, &mb);
         [self.finish(a, Some(ta)), self.finish(b, Some(tb))]
     }
+
+    /// Four fragments with their texture lookups' coordinate arithmetic lane by lane
+    /// ([`PreparedTexture::sample_base_quad`]).
+    const QUADS: bool = true;
+
+    #[inline(always)]
+    fn fragment_quad(&self, f: &[Fragment<'_, UnlitVarying>; 4]) -> [Option<Vec4>; 4] {
+        let Some((texture, mapping)) = self.base else {
+            return f.each_ref().map(|f| self.finish(f, None));
+        };
+        let [Some(m0), Some(m1), Some(m2), Some(m3)] =
+            f.each_ref().map(|f| self.map(mapping, uv_sample(f)))
+        else {
+            return f.each_ref().map(|f| self.fragment(f));
+        };
+        let t = texture.sample_base_quad([m0, m1, m2, m3]);
+        [0, 1, 2, 3].map(|k| self.finish(&f[k], Some(t[k])))
+    }
 }
 
 impl UnlitShader<'_> {
@@ -251,9 +269,77 @@ fn uv_sample(f: &Fragment<'_, UnlitVarying>) -> UvSample {
     }
 }
 
+/// Whether this thread's renders draw unlit materials through [`OneAtATime`] (tests compare
+/// the batched fragment paths with it).
+#[cfg(test)]
+pub(crate) fn one_at_a_time() -> bool {
+    ONE_AT_A_TIME.with(std::cell::Cell::get)
+}
+
+#[cfg(test)]
+thread_local! {
+    static ONE_AT_A_TIME: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// [`UnlitShader`] with its fragments handed over one at a time: neither pairs nor quads.
+#[cfg(test)]
+pub(crate) struct OneAtATime<'a>(pub(crate) UnlitShader<'a>);
+
+#[cfg(test)]
+impl Shader for OneAtATime<'_> {
+    type Vertex = u32;
+    type Varying = UnlitVarying;
+    fn vertex(&self, i: &u32) -> (Vec4, UnlitVarying) {
+        self.0.vertex(i)
+    }
+    fn fragment(&self, f: &Fragment<'_, UnlitVarying>) -> Option<Vec4> {
+        self.0.fragment(f)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The unlit fragments in quads and pairs (and the quads' lane-by-lane lookups) draw
+    /// exactly what they draw one at a time: every bit of the demo's linear colour, under
+    /// each filter (trilinear takes the quads' resolved path, the others their fallback).
+    #[test]
+    fn batched_fragments_draw_what_single_fragments_draw() {
+        use crate::demo::{demo_options, demo_scene};
+        use crate::{AntiAliasing, Filter, RenderOptions, Shading, render};
+        let scene = demo_scene();
+        let bits = |options: &RenderOptions, single: bool| -> Vec<u32> {
+            ONE_AT_A_TIME.with(|c| c.set(single));
+            let image = render(&scene, options).expect("renders").image;
+            ONE_AT_A_TIME.with(|c| c.set(false));
+            let texels = image.to_rgba32f().expect("small");
+            texels
+                .texels()
+                .iter()
+                .flat_map(|t| t.0.map(f32::to_bits))
+                .collect()
+        };
+        for filter in [
+            Filter::Nearest,
+            Filter::Bilinear,
+            Filter::Trilinear,
+            Filter::Ewa,
+        ] {
+            let options = RenderOptions {
+                shading: Shading::Unlit,
+                fog: None,
+                filter,
+                anti_aliasing: AntiAliasing::None,
+                ..demo_options(160, 96)
+            };
+            let (batched, single) = (bits(&options, false), bits(&options, true));
+            let distinct: std::collections::BTreeSet<u32> = batched.iter().copied().collect();
+            assert!(distinct.len() > 10, "{filter:?}: a blank picture");
+            let differing = batched.iter().zip(&single).filter(|(a, b)| a != b).count();
+            assert_eq!(differing, 0, "{filter:?}: {differing} values differ");
+        }
+    }
 
     fn varying(k: f32, colored: bool) -> UnlitVarying {
         UnlitVarying {

@@ -317,4 +317,71 @@ proptest! {
             }
         }
     }
+
+    /// `sample_quad` gives what four `sample` calls give, bit for bit, on the same paths and
+    /// cases as the pairs above, with four lookups that may each choose other levels (one
+    /// magnified, one past the chain's end), coordinates far outside the texture (past the
+    /// 32-bit fast path) and non-finite ones in any lane.
+    #[test]
+    fn quads_of_lookups_equal_single_lookups(
+        log_w in 0_u32..7,
+        log_h in 0_u32..7,
+        odd in any::<bool>(),
+        seed in any::<u64>(),
+        mode_u in 0_usize..4,
+        mode_v in 0_usize..4,
+        uv in (-3.0e3_f32..3.0e3, -3.0_f32..3.0),
+        ddx in (-0.5_f32..0.5, -0.5_f32..0.5),
+        ddy in (-0.5_f32..0.5, -0.5_f32..0.5),
+        scales in proptest::array::uniform3(prop_oneof![
+            Just(1.0_f32),
+            Just(0.01),
+            Just(0.0),
+            Just(40.0),
+            Just(f32::NAN)
+        ]),
+        far in prop_oneof![Just(1.0_f32), Just(3.0e8), Just(-2.5e7)],
+        opaque in any::<bool>(),
+    ) {
+        let (w, h) = (1 << log_w, 1 << log_h);
+        let (w, h) = if odd { (w + 3, h + 1) } else { (w, h) };
+        let mut base = texture(w, h, seed);
+        if opaque {
+            for t in base.texels_mut() {
+                t.0[3] = 255;
+            }
+        }
+        let chain = MipChain::generate(base, &MipOptions::default()).expect("small");
+        let modes = SamplerDescriptor {
+            address_mode_u: ADDRESS_MODES[mode_u],
+            address_mode_v: ADDRESS_MODES[mode_v],
+            ..SamplerDescriptor::trilinear()
+        };
+        let clamped = SamplerDescriptor { lod_min_clamp: 0.5, lod_max_clamp: 2.25, ..modes };
+        let repeat = SamplerDescriptor::trilinear().with_address_mode(AddressMode::Repeat);
+        let (uv, ddx, ddy) = (Vec2::from(uv), Vec2::from(ddx), Vec2::from(ddy));
+        let a = [uv, ddx, ddy];
+        let others: [[Vec2; 3]; 3] = core::array::from_fn(|k| {
+            let shift = Vec2::splat(0.25 * (k as f32 + 1.0));
+            [uv * 0.5 + shift, ddx * scales[k], ddy * scales[(k + 1) % 3]]
+        });
+        let distant = [uv * far, ddx, ddy];
+        let non_finite = [Vec2::new(f32::NAN, 0.5), ddx, ddy];
+        let mut descriptors = configurations();
+        descriptors.extend([modes, clamped, repeat]);
+        for descriptor in descriptors {
+            let sampler = TextureSampler::new(chain.clone(), descriptor);
+            for quad in [
+                [a, others[0], others[1], others[2]],
+                [others[2], a, distant, others[0]],
+                [a, a, a, a],
+                [others[1], non_finite, a, distant],
+            ] {
+                let colours = sampler.sample_quad(quad);
+                for (c, l) in colours.iter().zip(quad) {
+                    prop_assert_eq!(bits(*c), bits(sampler.sample(l[0], l[1], l[2])), "{:?} {:?}", descriptor, l);
+                }
+            }
+        }
+    }
 }
