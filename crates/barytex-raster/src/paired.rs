@@ -96,14 +96,11 @@ where
         self.queued = 0;
         let w = self.waiting;
         if S::QUADS {
-            let f = [
-                self.fragment(&w[0]),
-                self.fragment(&w[1]),
-                self.fragment(&w[2]),
-                self.fragment(&now),
-            ];
+            let p = [w[0], w[1], w[2], now];
+            let weights = self.context.weights_quad(p.map(|p| p.lambda));
+            let f = [0, 1, 2, 3].map(|k| self.fragment_weighted(&p[k], weights[k]));
             let c = self.shader.fragment_quad(&f);
-            for (p, c) in [w[0], w[1], w[2], now].iter().zip(c) {
+            for (p, c) in p.iter().zip(c) {
                 self.write(p, c);
             }
         } else {
@@ -139,8 +136,13 @@ where
     /// What the fragment stage sees at a centre (as `tile::shade_pixel` builds it).
     #[inline(always)]
     fn fragment(&self, p: &Passed) -> Fragment<'_, S::Varying> {
+        self.fragment_weighted(p, self.context.weights(p.lambda))
+    }
+
+    /// [`fragment`](Self::fragment) with the centre's interpolation weights given.
+    #[inline(always)]
+    fn fragment_weighted(&self, p: &Passed, weights: [f64; 3]) -> Fragment<'_, S::Varying> {
         let context = self.context;
-        let weights = context.weights(p.lambda);
         Fragment {
             varying: S::Varying::combine3(context.varyings, context.input_weights(weights)),
             depth: p.z,

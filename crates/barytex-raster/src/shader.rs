@@ -179,6 +179,49 @@ impl<V: Copy> PieceContext<V> {
         }
     }
 
+    /// [`weights`](Self::weights) at four points, lane by lane (each lane the same operations:
+    /// the same weights).
+    #[inline(always)]
+    pub(crate) fn weights_quad(&self, lambda: [[f64; 3]; 4]) -> [[f64; 3]; 4] {
+        match self.interpolation {
+            Interpolation::Affine => lambda,
+            Interpolation::Perspective | Interpolation::AffineSpans { .. } => {
+                let q = self.perspective_terms_quad(&lambda);
+                let inv_d: [f64; 4] = core::array::from_fn(|k| 1.0 / (q[0][k] + q[1][k] + q[2][k]));
+                core::array::from_fn(|k| core::array::from_fn(|i| q[i][k] * inv_d[k]))
+            }
+        }
+    }
+
+    /// `qᵢ = λᵢ/wᵢ` at four points: `q[i][k]` for vertex `i` at point `k` (lanes innermost).
+    #[inline(always)]
+    fn perspective_terms_quad(&self, lambda: &[[f64; 3]; 4]) -> [[f64; 4]; 3] {
+        core::array::from_fn(|i| core::array::from_fn(|k| lambda[k][i] * self.inv_w[i]))
+    }
+
+    /// [`derivative_weights_xy`](Self::derivative_weights_xy) of [`divide_terms`] at four
+    /// points with perspective, lane by lane: `[point][axis][vertex]`. Each lane computes the
+    /// same operations in the same order as one point alone (the sums `(a + b) + c`, as `sum`
+    /// from −0.0 adds them), so the weights are identical.
+    ///
+    /// [`divide_terms`]: Self::divide_terms
+    #[inline(always)]
+    fn derivative_weights_quad(&self, lambda: &[[f64; 3]; 4]) -> [[[f64; 3]; 2]; 4] {
+        let q = self.perspective_terms_quad(lambda);
+        let d: [f64; 4] = core::array::from_fn(|k| q[0][k] + q[1][k] + q[2][k]);
+        let d2 = d.map(|d| d * d);
+        // The piece's own terms: the gradients over w and their sums, per axis.
+        let qd: [[f64; 2]; 3] =
+            core::array::from_fn(|i| [0, 1].map(|axis| self.grads[i][axis] * self.inv_w[i]));
+        let dd: [f64; 2] = [0, 1].map(|axis| qd[0][axis] + qd[1][axis] + qd[2][axis]);
+        let w: [[[f64; 4]; 3]; 2] = [0, 1].map(|axis| {
+            core::array::from_fn(|i| {
+                core::array::from_fn(|k| (qd[i][axis] * d[k] - q[i][k] * dd[axis]) / d2[k])
+            })
+        });
+        core::array::from_fn(|k| [0, 1].map(|axis| [0, 1, 2].map(|i| w[axis][i][k])))
+    }
+
     /// What the weights' derivatives along both axes share: with perspective, `qᵢ = λᵢ/wᵢ`,
     /// `D = Σq` and `D²`; `None` for affine interpolation.
     #[inline]
@@ -371,6 +414,70 @@ impl<V: Interpolate> Fragment<'_, V> {
             T::combine3(parts, piece.input_weights(wx)),
             T::combine3(parts, piece.input_weights(wy)),
         )
+    }
+
+    /// [`derivatives_of`](Self::derivatives_of) at four fragments of one triangle piece (the
+    /// four of a [`Shader::fragment_quad`] call): the same values, with the perspective terms
+    /// and the derivative weights of the four computed lane by lane, which the compiler turns
+    /// into four fragments per instruction where the fragment loop is built for AVX2.
+    /// Fragments of different pieces are taken one by one.
+    ///
+    /// ```
+    /// use std::sync::atomic::{AtomicUsize, Ordering};
+    ///
+    /// use barytex_raster::{Fragment, Framebuffer, PipelineState, Shader, TargetLimits, draw};
+    /// use glam::{Vec3, Vec4};
+    ///
+    /// /// A perspective triangle whose quads check the batched derivatives.
+    /// struct Quads(AtomicUsize);
+    /// impl Shader for Quads {
+    ///     type Vertex = Vec3;
+    ///     type Varying = f32;
+    ///     fn vertex(&self, v: &Vec3) -> (Vec4, f32) {
+    ///         (Vec4::new(v.x, v.y, 0.5, 1.0 + 0.25 * v.y), v.x * v.y)
+    ///     }
+    ///     fn fragment(&self, _: &Fragment<'_, f32>) -> Option<Vec4> {
+    ///         Some(Vec4::ONE)
+    ///     }
+    ///     const QUADS: bool = true;
+    ///     fn fragment_quad(&self, f: &[Fragment<'_, f32>; 4]) -> [Option<Vec4>; 4] {
+    ///         let batched = Fragment::derivatives_of_quad(f, |v| *v);
+    ///         for (fragment, d) in f.iter().zip(batched) {
+    ///             assert_eq!(d, fragment.derivatives());
+    ///         }
+    ///         self.0.fetch_add(4, Ordering::Relaxed);
+    ///         [Some(Vec4::ONE); 4]
+    ///     }
+    /// }
+    /// let tri = [Vec3::new(-1.0, -1.0, 0.0), Vec3::new(3.0, -1.0, 0.0), Vec3::new(-1.0, 3.0, 0.0)];
+    /// let shader = Quads(AtomicUsize::new(0));
+    /// let mut fb = Framebuffer::new(8, 8, Vec4::ZERO, &TargetLimits::default())?;
+    /// draw(&mut fb, &shader, &PipelineState::default(), &tri, &[0, 1, 2]);
+    /// assert!(shader.0.into_inner() > 0);
+    /// # Ok::<(), barytex_raster::RasterError>(())
+    /// ```
+    ///
+    /// [`Shader::fragment_quad`]: crate::Shader::fragment_quad
+    #[must_use]
+    #[inline(always)]
+    pub fn derivatives_of_quad<T: Interpolate>(
+        f: &[Self; 4],
+        part: impl Fn(&V) -> T,
+    ) -> [(T, T); 4] {
+        let piece = f[0].piece;
+        let perspective = !matches!(piece.interpolation, Interpolation::Affine);
+        if !perspective || !f.iter().all(|x| core::ptr::eq(x.piece, piece)) {
+            return f.each_ref().map(|x| x.derivatives_of(&part));
+        }
+        let v = &piece.varyings;
+        let parts = [part(&v[0]), part(&v[1]), part(&v[2])];
+        let w = piece.derivative_weights_quad(&f.each_ref().map(|x| x.lambda));
+        w.map(|[wx, wy]| {
+            (
+                T::combine3(parts, piece.input_weights(wx)),
+                T::combine3(parts, piece.input_weights(wy)),
+            )
+        })
     }
 
     /// GPU-style x derivative: the difference with the other pixel of this pixel's 2×2 quad in

@@ -23,11 +23,7 @@ impl<const BATCH: usize> Shader for Colours<BATCH> {
         *v
     }
     fn fragment(&self, f: &Fragment<'_, Vec4>) -> Option<Vec4> {
-        if f.varying.x > 0.8 {
-            return None;
-        }
-        let (dx, dy) = f.derivatives();
-        Some((f.varying + (dx + dy) * 0.5).with_w(0.6))
+        colour(f, f.derivatives())
     }
     const PAIRS: bool = BATCH == 2;
     fn fragment_pair(&self, a: &Fragment<'_, Vec4>, b: &Fragment<'_, Vec4>) -> [Option<Vec4>; 2] {
@@ -36,15 +32,30 @@ impl<const BATCH: usize> Shader for Colours<BATCH> {
     }
     const QUADS: bool = BATCH == 4;
     fn fragment_quad(&self, f: &[Fragment<'_, Vec4>; 4]) -> [Option<Vec4>; 4] {
+        // The derivatives of the four at once: the same values as one by one, to the bit.
+        let d = Fragment::derivatives_of_quad(f, |v| *v);
+        for (fragment, (dx, dy)) in f.iter().zip(d) {
+            let bits = |v: Vec4| v.to_array().map(f32::to_bits);
+            let (x, y) = fragment.derivatives();
+            assert_eq!((bits(dx), bits(dy)), (bits(x), bits(y)));
+        }
         let mut c = [None; 4];
         for k in (0..4).rev() {
-            c[k] = self.fragment(&f[k]);
+            c[k] = colour(&f[k], d[k]);
         }
         c
     }
 }
 
-/// `count` random triangles with sides up to `size` (clip units), random depths and colours.
+/// The colour of `f` with derivatives `(dx, dy)`: discarded where red exceeds 0.8.
+fn colour(f: &Fragment<'_, Vec4>, (dx, dy): (Vec4, Vec4)) -> Option<Vec4> {
+    if f.varying.x > 0.8 {
+        return None;
+    }
+    Some((f.varying + (dx + dy) * 0.5).with_w(0.6))
+}
+
+/// `count` random triangles with sides up to `size` (NDC units), random depths, `w` and colours.
 fn triangles(count: usize, size: f32, seed: u64) -> Vec<(Vec4, Vec4)> {
     let mut state = seed | 1;
     let mut next = move || {
@@ -59,13 +70,14 @@ fn triangles(count: usize, size: f32, seed: u64) -> Vec<(Vec4, Vec4)> {
             let z = next();
             let colour = Vec4::new(next(), next(), next(), 1.0);
             let mut corner = || {
-                let clip = Vec4::new(
+                let ndc = Vec4::new(
                     centre.0 + (next() - 0.5) * size,
                     centre.1 + (next() - 0.5) * size,
                     z + next() * 0.1,
                     1.0,
                 );
-                (clip, colour * (0.5 + next()))
+                // A w of its own per vertex: perspective-correct weights and derivatives.
+                (ndc * (0.5 + 1.5 * next()), colour * (0.5 + next()))
             };
             [corner(), corner(), corner()]
         })

@@ -206,9 +206,8 @@ impl Shader for UnlitShader<'_> {
         let Some((texture, mapping)) = self.base else {
             return f.each_ref().map(|f| self.finish(f, None));
         };
-        let [Some(m0), Some(m1), Some(m2), Some(m3)] =
-            f.each_ref().map(|f| self.map(mapping, uv_sample(f)))
-        else {
+        let uv = uv_samples(f);
+        let [Some(m0), Some(m1), Some(m2), Some(m3)] = uv.map(|s| self.map(mapping, s)) else {
             return f.each_ref().map(|f| self.fragment(f));
         };
         let t = texture.sample_base_quad([m0, m1, m2, m3]);
@@ -256,6 +255,18 @@ fn identity_transform_sample(sample: UvSample) -> Option<UvSample> {
         duvdy: sample.duvdy + Vec2::ZERO,
     };
     (out.uv.is_finite() && out.duvdx.is_finite() && out.duvdy.is_finite()).then_some(out)
+}
+
+/// [`uv_sample`] at four fragments of one piece, their derivatives lane by lane
+/// ([`Fragment::derivatives_of_quad`]): the same values.
+#[inline(always)]
+fn uv_samples(f: &[Fragment<'_, UnlitVarying>; 4]) -> [UvSample; 4] {
+    let d = Fragment::derivatives_of_quad(f, |v: &UnlitVarying| v.uv);
+    [0, 1, 2, 3].map(|k| UvSample {
+        uv: f[k].varying.uv,
+        duvdx: d[k].0,
+        duvdy: d[k].1,
+    })
 }
 
 /// The base texture's coordinates at a fragment, with their screen derivatives.

@@ -129,10 +129,10 @@ fn taps_quad<const CLAMP_U: bool, const CLAMP_V: bool>(
     // Lanes 2k and 2k + 1: lookup k's x and y.
     let side = |j: usize| {
         let (w, h) = sizes[j / 2];
-        if j % 2 == 0 { w } else { h }
+        if j.is_multiple_of(2) { w } else { h }
     };
     let coordinate = |j: usize| {
-        if j % 2 == 0 { uv[j / 2].x } else { uv[j / 2].y }
+        if j.is_multiple_of(2) { uv[j / 2].x } else { uv[j / 2].y }
     };
     let x: [f64; 8] = core::array::from_fn(|j| f64::from(coordinate(j)) * f64::from(side(j)) - 0.5);
     let (i0, frac): ([i64; 8], [f32; 8]) = if x.iter().all(|x| x.abs() < 2_147_483_648.0) {
