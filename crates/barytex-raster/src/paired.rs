@@ -96,13 +96,21 @@ where
         self.queued = 0;
         let w = self.waiting;
         if S::QUADS {
+            // Written out lane by lane: `array::map` closures stayed out of line here.
             let p = [w[0], w[1], w[2], now];
-            let weights = self.context.weights_quad(p.map(|p| p.lambda));
-            let f = [0, 1, 2, 3].map(|k| self.fragment_weighted(&p[k], weights[k]));
-            let c = self.shader.fragment_quad(&f);
-            for (p, c) in p.iter().zip(c) {
-                self.write(p, c);
-            }
+            let lambda = [p[0].lambda, p[1].lambda, p[2].lambda, p[3].lambda];
+            let weights = self.context.weights_quad(lambda);
+            let f = [
+                self.fragment_weighted(&p[0], weights[0]),
+                self.fragment_weighted(&p[1], weights[1]),
+                self.fragment_weighted(&p[2], weights[2]),
+                self.fragment_weighted(&p[3], weights[3]),
+            ];
+            let [c0, c1, c2, c3] = self.shader.fragment_quad(&f);
+            self.write(&p[0], c0);
+            self.write(&p[1], c1);
+            self.write(&p[2], c2);
+            self.write(&p[3], c3);
         } else {
             self.pair(&w[0], &now);
         }

@@ -182,21 +182,45 @@ impl<V: Copy> PieceContext<V> {
     /// [`weights`](Self::weights) at four points, lane by lane (each lane the same operations:
     /// the same weights).
     #[inline(always)]
+    #[allow(
+        clippy::needless_range_loop,
+        reason = "lane loops: they unroll and vectorize"
+    )]
     pub(crate) fn weights_quad(&self, lambda: [[f64; 3]; 4]) -> [[f64; 3]; 4] {
         match self.interpolation {
             Interpolation::Affine => lambda,
             Interpolation::Perspective | Interpolation::AffineSpans { .. } => {
+                // Plain lane loops: `array::map` and `from_fn` closures stayed out of line.
                 let q = self.perspective_terms_quad(&lambda);
-                let inv_d: [f64; 4] = core::array::from_fn(|k| 1.0 / (q[0][k] + q[1][k] + q[2][k]));
-                core::array::from_fn(|k| core::array::from_fn(|i| q[i][k] * inv_d[k]))
+                let mut inv_d = [0.0; 4];
+                for k in 0..4 {
+                    inv_d[k] = 1.0 / (q[0][k] + q[1][k] + q[2][k]);
+                }
+                let mut weights = [[0.0; 3]; 4];
+                for k in 0..4 {
+                    for i in 0..3 {
+                        weights[k][i] = q[i][k] * inv_d[k];
+                    }
+                }
+                weights
             }
         }
     }
 
     /// `qᵢ = λᵢ/wᵢ` at four points: `q[i][k]` for vertex `i` at point `k` (lanes innermost).
     #[inline(always)]
+    #[allow(
+        clippy::needless_range_loop,
+        reason = "lane loops: they unroll and vectorize"
+    )]
     fn perspective_terms_quad(&self, lambda: &[[f64; 3]; 4]) -> [[f64; 4]; 3] {
-        core::array::from_fn(|i| core::array::from_fn(|k| lambda[k][i] * self.inv_w[i]))
+        let mut q = [[0.0; 4]; 3];
+        for i in 0..3 {
+            for k in 0..4 {
+                q[i][k] = lambda[k][i] * self.inv_w[i];
+            }
+        }
+        q
     }
 
     /// [`derivative_weights_xy`](Self::derivative_weights_xy) of [`divide_terms`] at four
@@ -206,20 +230,37 @@ impl<V: Copy> PieceContext<V> {
     ///
     /// [`divide_terms`]: Self::divide_terms
     #[inline(always)]
+    #[allow(
+        clippy::needless_range_loop,
+        reason = "lane loops: they unroll and vectorize"
+    )]
     fn derivative_weights_quad(&self, lambda: &[[f64; 3]; 4]) -> [[[f64; 3]; 2]; 4] {
         let q = self.perspective_terms_quad(lambda);
-        let d: [f64; 4] = core::array::from_fn(|k| q[0][k] + q[1][k] + q[2][k]);
-        let d2 = d.map(|d| d * d);
+        let (mut d, mut d2) = ([0.0; 4], [0.0; 4]);
+        for k in 0..4 {
+            d[k] = q[0][k] + q[1][k] + q[2][k];
+            d2[k] = d[k] * d[k];
+        }
         // The piece's own terms: the gradients over w and their sums, per axis.
-        let qd: [[f64; 2]; 3] =
-            core::array::from_fn(|i| [0, 1].map(|axis| self.grads[i][axis] * self.inv_w[i]));
-        let dd: [f64; 2] = [0, 1].map(|axis| qd[0][axis] + qd[1][axis] + qd[2][axis]);
-        let w: [[[f64; 4]; 3]; 2] = [0, 1].map(|axis| {
-            core::array::from_fn(|i| {
-                core::array::from_fn(|k| (qd[i][axis] * d[k] - q[i][k] * dd[axis]) / d2[k])
-            })
-        });
-        core::array::from_fn(|k| [0, 1].map(|axis| [0, 1, 2].map(|i| w[axis][i][k])))
+        let mut qd = [[0.0; 2]; 3];
+        for i in 0..3 {
+            for axis in 0..2 {
+                qd[i][axis] = self.grads[i][axis] * self.inv_w[i];
+            }
+        }
+        let mut dd = [0.0; 2];
+        for axis in 0..2 {
+            dd[axis] = qd[0][axis] + qd[1][axis] + qd[2][axis];
+        }
+        let mut w = [[[0.0; 3]; 2]; 4];
+        for axis in 0..2 {
+            for i in 0..3 {
+                for k in 0..4 {
+                    w[k][axis][i] = (qd[i][axis] * d[k] - q[i][k] * dd[axis]) / d2[k];
+                }
+            }
+        }
+        w
     }
 
     /// What the weights' derivatives along both axes share: with perspective, `qᵢ = λᵢ/wᵢ`,
@@ -467,17 +508,19 @@ impl<V: Interpolate> Fragment<'_, V> {
         let piece = f[0].piece;
         let perspective = !matches!(piece.interpolation, Interpolation::Affine);
         if !perspective || !f.iter().all(|x| core::ptr::eq(x.piece, piece)) {
-            return f.each_ref().map(|x| x.derivatives_of(&part));
+            return [0, 1, 2, 3].map(|k| f[k].derivatives_of(&part));
         }
         let v = &piece.varyings;
         let parts = [part(&v[0]), part(&v[1]), part(&v[2])];
-        let w = piece.derivative_weights_quad(&f.each_ref().map(|x| x.lambda));
-        w.map(|[wx, wy]| {
+        let lambda = [f[0].lambda, f[1].lambda, f[2].lambda, f[3].lambda];
+        let w = piece.derivative_weights_quad(&lambda);
+        let along = |k: usize| {
             (
-                T::combine3(parts, piece.input_weights(wx)),
-                T::combine3(parts, piece.input_weights(wy)),
+                T::combine3(parts, piece.input_weights(w[k][0])),
+                T::combine3(parts, piece.input_weights(w[k][1])),
             )
-        })
+        };
+        [along(0), along(1), along(2), along(3)]
     }
 
     /// GPU-style x derivative: the difference with the other pixel of this pixel's 2×2 quad in

@@ -74,7 +74,10 @@ impl PreparedTexture {
     #[inline(always)]
     pub(crate) fn sample_base_quad(&self, q: [barytex_uv::UvSample; 4]) -> [Vec4; 4] {
         match self {
-            Self::Srgba8(s) => s.sample_quad(q.map(|l| [l.uv, l.duvdx, l.duvdy])),
+            Self::Srgba8(s) => {
+                let l = |k: usize| [q[k].uv, q[k].duvdx, q[k].duvdy];
+                s.sample_quad([l(0), l(1), l(2), l(3)])
+            }
             other => q.map(|l| other.sample_base(&l)),
         }
     }

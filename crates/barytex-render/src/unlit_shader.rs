@@ -203,15 +203,27 @@ impl Shader for UnlitShader<'_> {
 
     #[inline(always)]
     fn fragment_quad(&self, f: &[Fragment<'_, UnlitVarying>; 4]) -> [Option<Vec4>; 4] {
+        // Written out lane by lane: `array::map` closures stayed out of line here.
         let Some((texture, mapping)) = self.base else {
-            return f.each_ref().map(|f| self.finish(f, None));
+            return [0, 1, 2, 3].map(|k| self.finish(&f[k], None));
         };
-        let uv = uv_samples(f);
-        let [Some(m0), Some(m1), Some(m2), Some(m3)] = uv.map(|s| self.map(mapping, s)) else {
-            return f.each_ref().map(|f| self.fragment(f));
+        let [s0, s1, s2, s3] = uv_samples(f);
+        let mapped = [
+            self.map(mapping, s0),
+            self.map(mapping, s1),
+            self.map(mapping, s2),
+            self.map(mapping, s3),
+        ];
+        let [Some(m0), Some(m1), Some(m2), Some(m3)] = mapped else {
+            return [0, 1, 2, 3].map(|k| self.fragment(&f[k]));
         };
-        let t = texture.sample_base_quad([m0, m1, m2, m3]);
-        [0, 1, 2, 3].map(|k| self.finish(&f[k], Some(t[k])))
+        let [t0, t1, t2, t3] = texture.sample_base_quad([m0, m1, m2, m3]);
+        [
+            self.finish(&f[0], Some(t0)),
+            self.finish(&f[1], Some(t1)),
+            self.finish(&f[2], Some(t2)),
+            self.finish(&f[3], Some(t3)),
+        ]
     }
 }
 
@@ -262,11 +274,12 @@ fn identity_transform_sample(sample: UvSample) -> Option<UvSample> {
 #[inline(always)]
 fn uv_samples(f: &[Fragment<'_, UnlitVarying>; 4]) -> [UvSample; 4] {
     let d = Fragment::derivatives_of_quad(f, |v: &UnlitVarying| v.uv);
-    [0, 1, 2, 3].map(|k| UvSample {
+    let sample = |k: usize| UvSample {
         uv: f[k].varying.uv,
         duvdx: d[k].0,
         duvdy: d[k].1,
-    })
+    };
+    [sample(0), sample(1), sample(2), sample(3)]
 }
 
 /// The base texture's coordinates at a fragment, with their screen derivatives.
