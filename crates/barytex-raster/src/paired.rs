@@ -1,12 +1,11 @@
-//! A piece's covered pixel centres shaded two or four at a time, for shaders that interleave
-//! two fragments ([`Shader::PAIRS`]) or work on four at once ([`Shader::QUADS`]): each centre
-//! that passes the depth test waits for the next ones, and the two (four) go to
-//! [`Shader::fragment_pair`] ([`Shader::fragment_quad`]) together; a piece's last ones go to
-//! [`Shader::fragment_pair`] and [`Shader::fragment`].
+//! A piece's covered pixel centres shaded two at a time, for shaders that interleave two
+//! fragments ([`Shader::PAIRS`]): each centre that passes the depth test waits for the next
+//! one, and the two go to [`Shader::fragment_pair`] together; a piece's odd last one goes to
+//! [`Shader::fragment`] alone.
 //!
-//! The results are those of the one-at-a-time loop in `tile.rs`: the centres of a batch are
-//! different pixels of one piece, so none's depth test reads what another writes, and each is
-//! written (colour, then depth) exactly as there.
+//! The results are those of the one-at-a-time loop in `tile.rs`: the two centres of a pair are
+//! different pixels of one piece, so neither's depth test reads what the other writes, and
+//! each is written (colour, then depth) exactly as there.
 //!
 //! On x86-64 the loop also runs as an AVX2 + FMA build (`cpu_features`): every closure below
 //! is `#[inline(always)]`, since one left out of line is compiled for the baseline alone (the
@@ -25,7 +24,7 @@ use crate::tile::TILE_PIXELS;
 use crate::{Fragment, Shader};
 
 /// A covered centre that passed the depth test.
-#[derive(Clone, Copy, Default)]
+#[derive(Clone, Copy)]
 struct Passed {
     /// Its index in the tile's buffers.
     index: usize,
@@ -45,9 +44,7 @@ struct Pairs<'a, S: Shader, C: ColorFormat, P, St, const OVER: bool> {
     store: St,
     /// The tile's mask (`MASKED` draws only).
     mask: Option<&'a [bool]>,
-    /// The centres waiting for a batch: the first `queued` of `waiting`.
-    waiting: [Passed; 3],
-    queued: usize,
+    waiting: Option<Passed>,
     visited: u64,
     skipped: u64,
     failed: u64,
@@ -87,70 +84,30 @@ where
             lambda,
             z,
         };
-        let batch = if S::QUADS { 4 } else { 2 };
-        if self.queued + 1 < batch {
-            self.waiting[self.queued] = now;
-            self.queued += 1;
+        let Some(first) = self.waiting.take() else {
+            self.waiting = Some(now);
             return;
-        }
-        self.queued = 0;
-        let w = self.waiting;
-        if S::QUADS {
-            // Written out lane by lane: `array::map` closures stayed out of line here.
-            let p = [w[0], w[1], w[2], now];
-            let lambda = [p[0].lambda, p[1].lambda, p[2].lambda, p[3].lambda];
-            let weights = self.context.weights_quad(lambda);
-            let f = [
-                self.fragment_weighted(&p[0], weights[0]),
-                self.fragment_weighted(&p[1], weights[1]),
-                self.fragment_weighted(&p[2], weights[2]),
-                self.fragment_weighted(&p[3], weights[3]),
-            ];
-            let [c0, c1, c2, c3] = self.shader.fragment_quad(&f);
-            self.write(&p[0], c0);
-            self.write(&p[1], c1);
-            self.write(&p[2], c2);
-            self.write(&p[3], c3);
-        } else {
-            self.pair(&w[0], &now);
-        }
-    }
-
-    /// Two centres through [`Shader::fragment_pair`].
-    #[inline(always)]
-    fn pair(&mut self, first: &Passed, second: &Passed) {
-        let (a, b) = (self.fragment(first), self.fragment(second));
+        };
+        let (a, b) = (self.fragment(&first), self.fragment(&now));
         let [ca, cb] = self.shader.fragment_pair(&a, &b);
-        self.write(first, ca);
-        self.write(second, cb);
+        self.write(&first, ca);
+        self.write(&now, cb);
     }
 
-    /// The waiting centres: two at a time, an odd last one alone.
+    /// The waiting centre, alone.
     #[inline(always)]
     fn flush(&mut self) {
-        let (w, n) = (self.waiting, self.queued);
-        self.queued = 0;
-        let mut k = 0;
-        if n >= 2 {
-            self.pair(&w[0], &w[1]);
-            k = 2;
-        }
-        if k < n {
-            let c = self.shader.fragment(&self.fragment(&w[k]));
-            self.write(&w[k], c);
+        if let Some(last) = self.waiting.take() {
+            let c = self.shader.fragment(&self.fragment(&last));
+            self.write(&last, c);
         }
     }
 
     /// What the fragment stage sees at a centre (as `tile::shade_pixel` builds it).
     #[inline(always)]
     fn fragment(&self, p: &Passed) -> Fragment<'_, S::Varying> {
-        self.fragment_weighted(p, self.context.weights(p.lambda))
-    }
-
-    /// [`fragment`](Self::fragment) with the centre's interpolation weights given.
-    #[inline(always)]
-    fn fragment_weighted(&self, p: &Passed, weights: [f64; 3]) -> Fragment<'_, S::Varying> {
         let context = self.context;
+        let weights = context.weights(p.lambda);
         Fragment {
             varying: S::Varying::combine3(context.varyings, context.input_weights(weights)),
             depth: p.z,
@@ -211,8 +168,7 @@ pub(crate) fn shade_centres_paired<S, C, const OVER: bool, const MASKED: bool>(
         passes,
         store,
         mask: mask.filter(|_| MASKED),
-        waiting: [Passed::default(); 3],
-        queued: 0,
+        waiting: None,
         visited: 0,
         skipped: 0,
         failed: 0,

@@ -78,44 +78,6 @@ pub trait Shader: Sync {
     ) -> [Option<Vec4>; 2] {
         [self.fragment(a), self.fragment(b)]
     }
-
-    /// Whether single-sampled draws hand this shader's fragments over four at a time, through
-    /// [`fragment_quad`](Self::fragment_quad) (a piece's last one to three through
-    /// [`fragment_pair`](Self::fragment_pair) and [`fragment`](Self::fragment)). Worth it for
-    /// a shader whose per-fragment arithmetic can run over four fragments per instruction
-    /// (arrays of four that the compiler vectorizes, as a texture lookup's coordinates). The
-    /// image is the same either way.
-    const QUADS: bool = false;
-
-    /// The colours of four fragments of one triangle piece at different pixels:
-    /// `f.map(|f| self.fragment(f))`, which an override must return too.
-    ///
-    /// ```
-    /// use barytex_raster::{Fragment, Shader};
-    /// use glam::{Vec3, Vec4};
-    ///
-    /// struct Grey;
-    /// impl Shader for Grey {
-    ///     type Vertex = Vec3;
-    ///     type Varying = f32;
-    ///     fn vertex(&self, v: &Vec3) -> (Vec4, f32) { (v.extend(1.0), v.x) }
-    ///     fn fragment(&self, f: &Fragment<'_, f32>) -> Option<Vec4> {
-    ///         Some(Vec4::new(f.varying, f.varying, f.varying, 1.0))
-    ///     }
-    ///     const QUADS: bool = true;
-    ///     fn fragment_quad(&self, f: &[Fragment<'_, f32>; 4]) -> [Option<Vec4>; 4] {
-    ///         // The four varyings as one array (a real shader would do longer work on it).
-    ///         let v = f.map(|f| f.varying);
-    ///         v.map(|x| Some(Vec4::new(x, x, x, 1.0)))
-    ///     }
-    /// }
-    /// ```
-    #[inline(always)]
-    fn fragment_quad(&self, f: &[Fragment<'_, Self::Varying>; 4]) -> [Option<Vec4>; 4] {
-        let [a, b] = self.fragment_pair(&f[0], &f[1]);
-        let [c, d] = self.fragment_pair(&f[2], &f[3]);
-        [a, b, c, d]
-    }
 }
 
 /// What the fragment stage sees at one pixel. The varying is interpolated eagerly; its screen
@@ -177,90 +139,6 @@ impl<V: Copy> PieceContext<V> {
                 q.map(|x| x * inv_d)
             }
         }
-    }
-
-    /// [`weights`](Self::weights) at four points, lane by lane (each lane the same operations:
-    /// the same weights).
-    #[inline(always)]
-    #[allow(
-        clippy::needless_range_loop,
-        reason = "lane loops: they unroll and vectorize"
-    )]
-    pub(crate) fn weights_quad(&self, lambda: [[f64; 3]; 4]) -> [[f64; 3]; 4] {
-        match self.interpolation {
-            Interpolation::Affine => lambda,
-            Interpolation::Perspective | Interpolation::AffineSpans { .. } => {
-                // Plain lane loops: `array::map` and `from_fn` closures stayed out of line.
-                let q = self.perspective_terms_quad(&lambda);
-                let mut inv_d = [0.0; 4];
-                for k in 0..4 {
-                    inv_d[k] = 1.0 / (q[0][k] + q[1][k] + q[2][k]);
-                }
-                let mut weights = [[0.0; 3]; 4];
-                for k in 0..4 {
-                    for i in 0..3 {
-                        weights[k][i] = q[i][k] * inv_d[k];
-                    }
-                }
-                weights
-            }
-        }
-    }
-
-    /// `qᵢ = λᵢ/wᵢ` at four points: `q[i][k]` for vertex `i` at point `k` (lanes innermost).
-    #[inline(always)]
-    #[allow(
-        clippy::needless_range_loop,
-        reason = "lane loops: they unroll and vectorize"
-    )]
-    fn perspective_terms_quad(&self, lambda: &[[f64; 3]; 4]) -> [[f64; 4]; 3] {
-        let mut q = [[0.0; 4]; 3];
-        for i in 0..3 {
-            for k in 0..4 {
-                q[i][k] = lambda[k][i] * self.inv_w[i];
-            }
-        }
-        q
-    }
-
-    /// [`derivative_weights_xy`](Self::derivative_weights_xy) of [`divide_terms`] at four
-    /// points with perspective, lane by lane: `[point][axis][vertex]`. Each lane computes the
-    /// same operations in the same order as one point alone (the sums `(a + b) + c`, as `sum`
-    /// from −0.0 adds them), so the weights are identical.
-    ///
-    /// [`divide_terms`]: Self::divide_terms
-    #[inline(always)]
-    #[allow(
-        clippy::needless_range_loop,
-        reason = "lane loops: they unroll and vectorize"
-    )]
-    fn derivative_weights_quad(&self, lambda: &[[f64; 3]; 4]) -> [[[f64; 3]; 2]; 4] {
-        let q = self.perspective_terms_quad(lambda);
-        let (mut d, mut d2) = ([0.0; 4], [0.0; 4]);
-        for k in 0..4 {
-            d[k] = q[0][k] + q[1][k] + q[2][k];
-            d2[k] = d[k] * d[k];
-        }
-        // The piece's own terms: the gradients over w and their sums, per axis.
-        let mut qd = [[0.0; 2]; 3];
-        for i in 0..3 {
-            for axis in 0..2 {
-                qd[i][axis] = self.grads[i][axis] * self.inv_w[i];
-            }
-        }
-        let mut dd = [0.0; 2];
-        for axis in 0..2 {
-            dd[axis] = qd[0][axis] + qd[1][axis] + qd[2][axis];
-        }
-        let mut w = [[[0.0; 3]; 2]; 4];
-        for axis in 0..2 {
-            for i in 0..3 {
-                for k in 0..4 {
-                    w[k][axis][i] = (qd[i][axis] * d[k] - q[i][k] * dd[axis]) / d2[k];
-                }
-            }
-        }
-        w
     }
 
     /// What the weights' derivatives along both axes share: with perspective, `qᵢ = λᵢ/wᵢ`,
@@ -455,72 +333,6 @@ impl<V: Interpolate> Fragment<'_, V> {
             T::combine3(parts, piece.input_weights(wx)),
             T::combine3(parts, piece.input_weights(wy)),
         )
-    }
-
-    /// [`derivatives_of`](Self::derivatives_of) at four fragments of one triangle piece (the
-    /// four of a [`Shader::fragment_quad`] call): the same values, with the perspective terms
-    /// and the derivative weights of the four computed lane by lane, which the compiler turns
-    /// into four fragments per instruction where the fragment loop is built for AVX2.
-    /// Fragments of different pieces are taken one by one.
-    ///
-    /// ```
-    /// use std::sync::atomic::{AtomicUsize, Ordering};
-    ///
-    /// use barytex_raster::{Fragment, Framebuffer, PipelineState, Shader, TargetLimits, draw};
-    /// use glam::{Vec3, Vec4};
-    ///
-    /// /// A perspective triangle whose quads check the batched derivatives.
-    /// struct Quads(AtomicUsize);
-    /// impl Shader for Quads {
-    ///     type Vertex = Vec3;
-    ///     type Varying = f32;
-    ///     fn vertex(&self, v: &Vec3) -> (Vec4, f32) {
-    ///         (Vec4::new(v.x, v.y, 0.5, 1.0 + 0.25 * v.y), v.x * v.y)
-    ///     }
-    ///     fn fragment(&self, _: &Fragment<'_, f32>) -> Option<Vec4> {
-    ///         Some(Vec4::ONE)
-    ///     }
-    ///     const QUADS: bool = true;
-    ///     fn fragment_quad(&self, f: &[Fragment<'_, f32>; 4]) -> [Option<Vec4>; 4] {
-    ///         let batched = Fragment::derivatives_of_quad(f, |v| *v);
-    ///         for (fragment, d) in f.iter().zip(batched) {
-    ///             assert_eq!(d, fragment.derivatives());
-    ///         }
-    ///         self.0.fetch_add(4, Ordering::Relaxed);
-    ///         [Some(Vec4::ONE); 4]
-    ///     }
-    /// }
-    /// let tri = [Vec3::new(-1.0, -1.0, 0.0), Vec3::new(3.0, -1.0, 0.0), Vec3::new(-1.0, 3.0, 0.0)];
-    /// let shader = Quads(AtomicUsize::new(0));
-    /// let mut fb = Framebuffer::new(8, 8, Vec4::ZERO, &TargetLimits::default())?;
-    /// draw(&mut fb, &shader, &PipelineState::default(), &tri, &[0, 1, 2]);
-    /// assert!(shader.0.into_inner() > 0);
-    /// # Ok::<(), barytex_raster::RasterError>(())
-    /// ```
-    ///
-    /// [`Shader::fragment_quad`]: crate::Shader::fragment_quad
-    #[must_use]
-    #[inline(always)]
-    pub fn derivatives_of_quad<T: Interpolate>(
-        f: &[Self; 4],
-        part: impl Fn(&V) -> T,
-    ) -> [(T, T); 4] {
-        let piece = f[0].piece;
-        let perspective = !matches!(piece.interpolation, Interpolation::Affine);
-        if !perspective || !f.iter().all(|x| core::ptr::eq(x.piece, piece)) {
-            return [0, 1, 2, 3].map(|k| f[k].derivatives_of(&part));
-        }
-        let v = &piece.varyings;
-        let parts = [part(&v[0]), part(&v[1]), part(&v[2])];
-        let lambda = [f[0].lambda, f[1].lambda, f[2].lambda, f[3].lambda];
-        let w = piece.derivative_weights_quad(&lambda);
-        let along = |k: usize| {
-            (
-                T::combine3(parts, piece.input_weights(w[k][0])),
-                T::combine3(parts, piece.input_weights(w[k][1])),
-            )
-        };
-        [along(0), along(1), along(2), along(3)]
     }
 
     /// GPU-style x derivative: the difference with the other pixel of this pixel's 2×2 quad in

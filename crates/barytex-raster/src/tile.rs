@@ -199,7 +199,7 @@ fn shade_centres<S: Shader, C: ColorFormat, const OVER: bool, const MASKED: bool
     passes: impl Fn(f32, f32) -> bool,
     store: impl Fn(f32, f32) -> f32,
 ) {
-    if (S::PAIRS || S::QUADS)
+    if S::PAIRS
         && let Ok(color) = <&mut [C::Sample; TILE_PIXELS]>::try_from(&mut *tile.color)
         && let Ok(depth) = <&mut [f32; TILE_PIXELS]>::try_from(&mut *tile.depth)
     {

@@ -1,8 +1,8 @@
-//! Shaders that take their fragments in pairs (`Shader::PAIRS`) or fours (`Shader::QUADS`) draw
-//! exactly what they draw one fragment at a time: the same image, depth and statistics, under
-//! every single-sample depth/blend/mask combination, on small and large triangles, on 1 and 2
-//! threads, in the AVX2 + FMA build of the batching loop (where the processor has it; replace
-//! blending with the depth written and no mask) and in the baseline build.
+//! Shaders that take their fragments in pairs (`Shader::PAIRS`) draw exactly what they draw one
+//! fragment at a time: the same image, depth and statistics, under every single-sample
+//! depth/blend/mask combination, on small and large triangles, on 1 and 2 threads, in the
+//! AVX2 + FMA build of the paired loop (where the processor has it; replace blending with the
+//! depth written and no mask) and in the baseline build.
 
 use barytex_raster::{
     Blend, CullMode, DepthCompare, DrawStats, Fragment, Framebuffer, PipelineState, Rgba8Unorm,
@@ -11,51 +11,31 @@ use barytex_raster::{
 use glam::Vec4;
 
 /// A colour varying, discarding where its red exceeds 0.8 and reading its derivatives;
-/// `BATCH` (1, 2 or 4) decides how many fragments the rasterizer hands over at once. The
-/// overrides shade the last fragment first: the rasterizer must not depend on the order
-/// within a batch.
-struct Colours<const BATCH: usize>;
+/// `PAIRED` decides whether the rasterizer pairs its fragments. The pair override shades the
+/// second fragment first: the rasterizer must not depend on the order within a pair.
+struct Colours<const PAIRED: bool>;
 
-impl<const BATCH: usize> Shader for Colours<BATCH> {
+impl<const PAIRED: bool> Shader for Colours<PAIRED> {
     type Vertex = (Vec4, Vec4);
     type Varying = Vec4;
     fn vertex(&self, v: &(Vec4, Vec4)) -> (Vec4, Vec4) {
         *v
     }
     fn fragment(&self, f: &Fragment<'_, Vec4>) -> Option<Vec4> {
-        colour(f, f.derivatives())
+        if f.varying.x > 0.8 {
+            return None;
+        }
+        let (dx, dy) = f.derivatives();
+        Some((f.varying + (dx + dy) * 0.5).with_w(0.6))
     }
-    const PAIRS: bool = BATCH == 2;
+    const PAIRS: bool = PAIRED;
     fn fragment_pair(&self, a: &Fragment<'_, Vec4>, b: &Fragment<'_, Vec4>) -> [Option<Vec4>; 2] {
         let second = self.fragment(b);
         [self.fragment(a), second]
     }
-    const QUADS: bool = BATCH == 4;
-    fn fragment_quad(&self, f: &[Fragment<'_, Vec4>; 4]) -> [Option<Vec4>; 4] {
-        // The derivatives of the four at once: the same values as one by one, to the bit.
-        let d = Fragment::derivatives_of_quad(f, |v| *v);
-        for (fragment, (dx, dy)) in f.iter().zip(d) {
-            let bits = |v: Vec4| v.to_array().map(f32::to_bits);
-            let (x, y) = fragment.derivatives();
-            assert_eq!((bits(dx), bits(dy)), (bits(x), bits(y)));
-        }
-        let mut c = [None; 4];
-        for k in (0..4).rev() {
-            c[k] = colour(&f[k], d[k]);
-        }
-        c
-    }
 }
 
-/// The colour of `f` with derivatives `(dx, dy)`: discarded where red exceeds 0.8.
-fn colour(f: &Fragment<'_, Vec4>, (dx, dy): (Vec4, Vec4)) -> Option<Vec4> {
-    if f.varying.x > 0.8 {
-        return None;
-    }
-    Some((f.varying + (dx + dy) * 0.5).with_w(0.6))
-}
-
-/// `count` random triangles with sides up to `size` (NDC units), random depths, `w` and colours.
+/// `count` random triangles with sides up to `size` (clip units), random depths and colours.
 fn triangles(count: usize, size: f32, seed: u64) -> Vec<(Vec4, Vec4)> {
     let mut state = seed | 1;
     let mut next = move || {
@@ -70,21 +50,20 @@ fn triangles(count: usize, size: f32, seed: u64) -> Vec<(Vec4, Vec4)> {
             let z = next();
             let colour = Vec4::new(next(), next(), next(), 1.0);
             let mut corner = || {
-                let ndc = Vec4::new(
+                let clip = Vec4::new(
                     centre.0 + (next() - 0.5) * size,
                     centre.1 + (next() - 0.5) * size,
                     z + next() * 0.1,
                     1.0,
                 );
-                // A w of its own per vertex: perspective-correct weights and derivatives.
-                (ndc * (0.5 + 1.5 * next()), colour * (0.5 + next()))
+                (clip, colour * (0.5 + next()))
             };
             [corner(), corner(), corner()]
         })
         .collect()
 }
 
-fn render<const BATCH: usize>(
+fn render<const PAIRED: bool>(
     vertices: &[(Vec4, Vec4)],
     state: &PipelineState,
     masked: bool,
@@ -110,7 +89,7 @@ fn render<const BATCH: usize>(
                 .expect("small");
         }
         let indices: Vec<u32> = (0..vertices.len() as u32).collect();
-        let stats = draw(&mut fb, &Colours::<BATCH>, state, vertices, &indices);
+        let stats = draw(&mut fb, &Colours::<PAIRED>, state, vertices, &indices);
         let pixels = (0..h)
             .flat_map(|y| (0..w).map(move |x| (x, y)))
             .map(|(x, y)| fb.stored(x, y).expect("inside"))
@@ -124,7 +103,7 @@ fn render<const BATCH: usize>(
 }
 
 #[test]
-fn paired_and_quad_fragments_draw_what_single_fragments_draw() {
+fn paired_fragments_draw_what_single_fragments_draw() {
     let states = [
         (Some(DepthCompare::Less), Blend::Replace, true),
         (Some(DepthCompare::LessEqual), Blend::Replace, true),
@@ -145,15 +124,13 @@ fn paired_and_quad_fragments_draw_what_single_fragments_draw() {
             };
             for masked in [false, true] {
                 for threads in [1, 2] {
-                    let single = render::<1>(&vertices, &state, masked, threads);
-                    // Batched in the AVX2 build where the processor has it, then in the
+                    let single = render::<false>(&vertices, &state, masked, threads);
+                    // Paired in the AVX2 build where the processor has it, then in the
                     // baseline build (the setting is the process's: this binary has no other
                     // test that could draw meanwhile).
-                    let paired = render::<2>(&vertices, &state, masked, threads);
-                    let quads = render::<4>(&vertices, &state, masked, threads);
+                    let paired = render::<true>(&vertices, &state, masked, threads);
                     barytex_raster::allow_avx2(false);
-                    let baseline = render::<2>(&vertices, &state, masked, threads);
-                    let quads_baseline = render::<4>(&vertices, &state, masked, threads);
+                    let baseline = render::<true>(&vertices, &state, masked, threads);
                     barytex_raster::allow_avx2(true);
                     assert!(single.2.fragments_shaded > 0 && single.2.fragments_discarded > 0);
                     let what = format!(
@@ -162,8 +139,6 @@ fn paired_and_quad_fragments_draw_what_single_fragments_draw() {
                     );
                     assert_eq!(single, paired, "{what}");
                     assert_eq!(single, baseline, "{what}, baseline build");
-                    assert_eq!(single, quads, "{what}, quads");
-                    assert_eq!(single, quads_baseline, "{what}, quads, baseline build");
                 }
             }
         }

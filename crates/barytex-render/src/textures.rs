@@ -66,21 +66,6 @@ impl PreparedTexture {
             other => [other.sample_base(a), other.sample_base(b)],
         }
     }
-
-    /// [`sample_base`](Self::sample_base) at four points, the lookups' coordinate arithmetic
-    /// lane by lane for the sRGB format
-    /// ([`TextureSampler::sample_quad`](barytex_texture::TextureSampler::sample_quad)); the
-    /// same values.
-    #[inline(always)]
-    pub(crate) fn sample_base_quad(&self, q: [barytex_uv::UvSample; 4]) -> [Vec4; 4] {
-        match self {
-            Self::Srgba8(s) => {
-                let l = |k: usize| [q[k].uv, q[k].duvdx, q[k].duvdy];
-                s.sample_quad([l(0), l(1), l(2), l(3)])
-            }
-            other => q.map(|l| other.sample_base(&l)),
-        }
-    }
 }
 
 impl barytex_texture::Sampler for PreparedTexture {

@@ -196,35 +196,6 @@ impl Shader for UnlitShader<'_> {
         let [ta, tb] = texture.sample_base_pair(&ma, &mb);
         [self.finish(a, Some(ta)), self.finish(b, Some(tb))]
     }
-
-    /// Four fragments with their texture lookups' coordinate arithmetic lane by lane
-    /// ([`PreparedTexture::sample_base_quad`]).
-    const QUADS: bool = true;
-
-    #[inline(always)]
-    fn fragment_quad(&self, f: &[Fragment<'_, UnlitVarying>; 4]) -> [Option<Vec4>; 4] {
-        // Written out lane by lane: `array::map` closures stayed out of line here.
-        let Some((texture, mapping)) = self.base else {
-            return [0, 1, 2, 3].map(|k| self.finish(&f[k], None));
-        };
-        let [s0, s1, s2, s3] = uv_samples(f);
-        let mapped = [
-            self.map(mapping, s0),
-            self.map(mapping, s1),
-            self.map(mapping, s2),
-            self.map(mapping, s3),
-        ];
-        let [Some(m0), Some(m1), Some(m2), Some(m3)] = mapped else {
-            return [0, 1, 2, 3].map(|k| self.fragment(&f[k]));
-        };
-        let [t0, t1, t2, t3] = texture.sample_base_quad([m0, m1, m2, m3]);
-        [
-            self.finish(&f[0], Some(t0)),
-            self.finish(&f[1], Some(t1)),
-            self.finish(&f[2], Some(t2)),
-            self.finish(&f[3], Some(t3)),
-        ]
-    }
 }
 
 impl UnlitShader<'_> {
@@ -269,19 +240,6 @@ fn identity_transform_sample(sample: UvSample) -> Option<UvSample> {
     (out.uv.is_finite() && out.duvdx.is_finite() && out.duvdy.is_finite()).then_some(out)
 }
 
-/// [`uv_sample`] at four fragments of one piece, their derivatives lane by lane
-/// ([`Fragment::derivatives_of_quad`]): the same values.
-#[inline(always)]
-fn uv_samples(f: &[Fragment<'_, UnlitVarying>; 4]) -> [UvSample; 4] {
-    let d = Fragment::derivatives_of_quad(f, |v: &UnlitVarying| v.uv);
-    let sample = |k: usize| UvSample {
-        uv: f[k].varying.uv,
-        duvdx: d[k].0,
-        duvdy: d[k].1,
-    };
-    [sample(0), sample(1), sample(2), sample(3)]
-}
-
 /// The base texture's coordinates at a fragment, with their screen derivatives.
 #[inline(always)]
 fn uv_sample(f: &Fragment<'_, UnlitVarying>) -> UvSample {
@@ -293,77 +251,9 @@ fn uv_sample(f: &Fragment<'_, UnlitVarying>) -> UvSample {
     }
 }
 
-/// Whether this thread's renders draw unlit materials through [`OneAtATime`] (tests compare
-/// the batched fragment paths with it).
-#[cfg(test)]
-pub(crate) fn one_at_a_time() -> bool {
-    ONE_AT_A_TIME.with(std::cell::Cell::get)
-}
-
-#[cfg(test)]
-thread_local! {
-    static ONE_AT_A_TIME: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
-}
-
-/// [`UnlitShader`] with its fragments handed over one at a time: neither pairs nor quads.
-#[cfg(test)]
-pub(crate) struct OneAtATime<'a>(pub(crate) UnlitShader<'a>);
-
-#[cfg(test)]
-impl Shader for OneAtATime<'_> {
-    type Vertex = u32;
-    type Varying = UnlitVarying;
-    fn vertex(&self, i: &u32) -> (Vec4, UnlitVarying) {
-        self.0.vertex(i)
-    }
-    fn fragment(&self, f: &Fragment<'_, UnlitVarying>) -> Option<Vec4> {
-        self.0.fragment(f)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// The unlit fragments in quads and pairs (and the quads' lane-by-lane lookups) draw
-    /// exactly what they draw one at a time: every bit of the demo's linear colour, under
-    /// each filter (trilinear takes the quads' resolved path, the others their fallback).
-    #[test]
-    fn batched_fragments_draw_what_single_fragments_draw() {
-        use crate::demo::{demo_options, demo_scene};
-        use crate::{AntiAliasing, Filter, RenderOptions, Shading, render};
-        let scene = demo_scene();
-        let bits = |options: &RenderOptions, single: bool| -> Vec<u32> {
-            ONE_AT_A_TIME.with(|c| c.set(single));
-            let image = render(&scene, options).expect("renders").image;
-            ONE_AT_A_TIME.with(|c| c.set(false));
-            let texels = image.to_rgba32f().expect("small");
-            texels
-                .texels()
-                .iter()
-                .flat_map(|t| t.0.map(f32::to_bits))
-                .collect()
-        };
-        for filter in [
-            Filter::Nearest,
-            Filter::Bilinear,
-            Filter::Trilinear,
-            Filter::Ewa,
-        ] {
-            let options = RenderOptions {
-                shading: Shading::Unlit,
-                fog: None,
-                filter,
-                anti_aliasing: AntiAliasing::None,
-                ..demo_options(160, 96)
-            };
-            let (batched, single) = (bits(&options, false), bits(&options, true));
-            let distinct: std::collections::BTreeSet<u32> = batched.iter().copied().collect();
-            assert!(distinct.len() > 10, "{filter:?}: a blank picture");
-            let differing = batched.iter().zip(&single).filter(|(a, b)| a != b).count();
-            assert_eq!(differing, 0, "{filter:?}: {differing} values differ");
-        }
-    }
 
     fn varying(k: f32, colored: bool) -> UnlitVarying {
         UnlitVarying {

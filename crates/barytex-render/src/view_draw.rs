@@ -146,11 +146,6 @@ impl SceneDraw<'_> {
                 };
                 let v = &item.vertices;
                 let s = match UnlitShader::of(&shader) {
-                    #[cfg(test)]
-                    Some(unlit) if crate::unlit_shader::one_at_a_time() => {
-                        let unlit = crate::unlit_shader::OneAtATime(unlit);
-                        draw_item(fb, &unlit, &state, item.kind, raster_only, v, indices)
-                    }
                     Some(unlit) => {
                         draw_item(fb, &unlit, &state, item.kind, raster_only, v, indices)
                     }

@@ -68,20 +68,7 @@ pub(crate) fn bilinear_resolved<
     let (tx, ty) = linear_taps_pair(uv, w, h);
     let (x0, x1) = resolved_pair::<CLAMP_U>(tx.i0, w);
     let (y0, y1) = resolved_pair::<CLAMP_V>(ty.i0, h);
-    bilinear_texels::<T, OPAQUE>(level, [x0, x1, y0, y1], [tx.frac, ty.frac])
-}
-
-/// The bilinear blend of [`bilinear_resolved`] from its four texels' addresses
-/// `[x0, x1, y0, y1]` (inside the level) and the fractions `[fx, fy]`: premultiplied, or
-/// opaque (`OPAQUE`, see there).
-#[must_use]
-#[inline(always)]
-pub(crate) fn bilinear_texels<T: Texel, const OPAQUE: bool>(
-    level: &Texture2d<T>,
-    [x0, x1, y0, y1]: [usize; 4],
-    [fx, fy]: [f32; 2],
-) -> Vec4 {
-    let (texels, stride) = (level.texels(), level.size().0 as usize);
+    let (texels, stride) = (level.texels(), w as usize);
     let (row0, row1) = (
         &texels[y0 * stride..][..stride],
         &texels[y1 * stride..][..stride],
@@ -97,16 +84,16 @@ pub(crate) fn bilinear_texels<T: Texel, const OPAQUE: bool>(
     let c10 = fetch(row0[x1]);
     let c01 = fetch(row1[x0]);
     let c11 = fetch(row1[x1]);
-    let top = c00 + (c10 - c00) * fx;
-    let bottom = c01 + (c11 - c01) * fx;
-    top + (bottom - top) * fy
+    let top = c00 + (c10 - c00) * tx.frac;
+    let bottom = c01 + (c11 - c01) * tx.frac;
+    top + (bottom - top) * ty.frac
 }
 
 /// The addresses of taps `i0` and `i0 + 1` on an axis of `size` texels (≥ 1): clamped to the
 /// edge, or masked (repeat over a power-of-two side). Saturating as in `bilinear`: a saturated
 /// index's neighbour is itself.
 #[inline(always)]
-pub(crate) fn resolved_pair<const CLAMP: bool>(i0: i64, size: u32) -> (usize, usize) {
+fn resolved_pair<const CLAMP: bool>(i0: i64, size: u32) -> (usize, usize) {
     let last = i64::from(size) - 1;
     let i1 = i0.saturating_add(1);
     if CLAMP {

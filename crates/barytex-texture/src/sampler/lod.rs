@@ -29,13 +29,7 @@ use glam::Vec2;
 #[must_use]
 #[inline]
 pub fn lod(ddx: Vec2, ddy: Vec2, size: (u32, u32)) -> f32 {
-    lod_of_footprint(footprint_squared(ddx, ddy, size))
-}
-
-/// [`lod`] from the footprint's `ρ²` ([`footprint_squared`]): `+∞` for a NaN or infinite one.
-#[must_use]
-#[inline]
-pub(crate) fn lod_of_footprint(rho_squared: f64) -> f32 {
+    let rho_squared = footprint_squared(ddx, ddy, size);
     if rho_squared.is_nan() || rho_squared == f64::INFINITY {
         return f32::INFINITY;
     }

@@ -28,7 +28,6 @@ macro_rules! resolved_kernel {
 }
 // After the macro: the module uses it.
 mod lookup_pair;
-mod lookup_quad;
 
 /// A texture (its mip chain) with the sampler state that filters it.
 ///
