@@ -3,7 +3,7 @@
 same glTF scenes with the same camera, 1 and 2 threads on each side, and the ratio.
 
     python3 tools/llvmpipe_frame.py [--fixtures DIR] [--barytex BIN] [--frames N] [--rounds R]
-                                    [--scenes Avocado Suzanne ...] [--markdown FILE]
+                                    [--scenes Avocado Suzanne ...] [--markdown FILE] [--json FILE]
 
 e.g. `python3 tools/llvmpipe_frame.py --frames 5 --rounds 3 --markdown /tmp/peers-llvmpipe.md`
 (about a minute on 2 shared cores); `--help` lists every option.
@@ -410,6 +410,8 @@ def main():
                          "linear RGBA32F read back as floats and encoded afterwards (default %(default)s)")
     ap.add_argument("--out", default="/tmp/llvmpipe-frame", help="folder for the images (default %(default)s)")
     ap.add_argument("--markdown", help="also write the results as a markdown section to this file")
+    ap.add_argument("--json", help="also write the rows (scene, threads, frame medians, ratio and its "
+                    "range) as JSON to this file (tools/speed_bars.py reads it)")
     ap.add_argument("--max-mib", type=int, default=256, help="largest model file or buffer (default %(default)s)")
     ap.add_argument("--venv", default=str(VENV), help="the virtual environment (default %(default)s)")
     args = ap.parse_args()
@@ -526,6 +528,13 @@ def main():
     for name, why in skipped:
         print(f"skipped {name}: {why}")
     print(f"images: {out}/<scene>-barytex-t*.png, -llvmpipe-t*.png, -diff.png (|difference| × 4)")
+    if args.json:
+        keep = ("scene", "threads", "bx", "bx_range", "gl", "gl_range", "ratio", "ratio_range", "mad")
+        Path(args.json).write_text(json.dumps({
+            "barytex": version, "renderer": renderer, "size": list(size), "frames": args.frames,
+            "rounds": args.rounds, "rows": [{k: r[k] for k in keep} for r in rows],
+        }, indent=1))
+        print(f"wrote {args.json}")
     if args.markdown:
         write_markdown(Path(args.markdown), rows, threads, table, command, version, renderer, size, args, mips,
                        skipped)
