@@ -473,8 +473,9 @@ fn render_index(options: &Options, sections: &[Section], pages: &[&Section]) -> 
     let _ = writeln!(
         out,
         "| [peers.md](peers.md) | the hot paths beside peers and same-result kernels in \
-         criterion runs (lookups, mips, remap, SLERP, the demo frame); run by hand from \
-         `benches/`, not by this tool |\n"
+         criterion runs (lookups, mips, remap, SLERP, the rasterizer beside euc, the unlit frame \
+         beside llvmpipe, the demo frame); run by hand from `benches/` and `tools/`, every speed \
+         bar at once by `python3 tools/speed_bars.py`, not by this tool |\n"
     );
     let _ = writeln!(
         out,
